@@ -1,0 +1,17 @@
+# Writes every shaders/*.glsl into one C++ file as raw string literals, looked up by file name.
+file(GLOB shaders "${SHADER_DIR}/*.glsl")
+list(SORT shaders)
+set(body "// Generated from shaders/*.glsl by cmake/EmbedShaders.cmake. Do not edit.\n")
+string(APPEND body "#include \"render/shader_source.h\"\n\nnamespace systole::render {\n\n")
+string(APPEND body "const std::vector<EmbeddedShader>& embedded_shaders() {\n")
+string(APPEND body "  static const std::vector<EmbeddedShader> shaders = {\n")
+foreach(path ${shaders})
+  get_filename_component(name "${path}" NAME)
+  file(READ "${path}" text)
+  string(APPEND body "    {\"${name}\", R\"SYSTOLE_GLSL(${text})SYSTOLE_GLSL\"},\n")
+endforeach()
+string(APPEND body "  };\n  return shaders;\n}\n\n}  // namespace systole::render\n")
+file(WRITE "${OUTPUT}.tmp" "${body}")
+# Only touch the output when it changed, so an unchanged shader set rebuilds nothing.
+file(COPY_FILE "${OUTPUT}.tmp" "${OUTPUT}" ONLY_IF_DIFFERENT)
+file(REMOVE "${OUTPUT}.tmp")

@@ -1,0 +1,15 @@
+#pragma once
+// What `systole info` reports about the encoding libraries.
+
+#include <string>
+#include <vector>
+
+namespace systole::encode {
+
+/// "libavcodec 59.37.100", ... for each FFmpeg library linked.
+std::vector<std::string> library_versions();
+
+/// Names of the H.264 encoders libavcodec offers (libx264 first when present).
+std::vector<std::string> h264_encoders();
+
+}  // namespace systole::encode

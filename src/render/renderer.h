@@ -1,0 +1,54 @@
+#pragma once
+// The off-screen rasterizer: an OSMesa OpenGL 4.5 core-profile context drawing organ
+// surfaces into a (multisampled) framebuffer, read back as an RGB image.
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/image.h"
+#include "scene/scene.h"
+
+namespace systole::render {
+
+struct GlInfo {
+  std::string vendor;
+  std::string renderer;      ///< e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+  std::string version;       ///< e.g. "4.5 (Core Profile) Mesa 22.3.6".
+  std::string glsl_version;
+};
+
+class Renderer {
+ public:
+  /// Creates the context and a width x height framebuffer with `msaa_samples` (0, 2 or 4).
+  /// Throws Error(kInternal) when OSMesa or a shader fails, with the driver's log.
+  Renderer(int width, int height, int msaa_samples);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  GlInfo info() const;
+
+  /// Registers a surface whose topology never changes; returns its id. Colours are per
+  /// vertex (linear RGB).
+  int add_surface(const std::vector<Eigen::Vector3i>& triangles,
+                  const std::vector<scene::Color>& vertex_colors, const scene::Material& material);
+
+  /// Uploads a surface's current vertex positions and unit normals, 3 floats per vertex.
+  void update_surface(int id, const float* positions_xyz, const float* normals_xyz);
+
+  /// Draws every surface and waits for the rasterizer to finish (so its cost is measured here).
+  void draw(const scene::Camera& camera, const std::vector<scene::Light>& lights,
+            const scene::Color& background);
+
+  /// Reads the last frame back (resolving multisampling), top row first, into `out`
+  /// (resized if needed; no allocation when it already has the right size).
+  void read_frame(Image& out);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace systole::render

@@ -1,0 +1,189 @@
+#pragma once
+// The validated scene: plain structs, every quantity in SI units (metres, seconds,
+// hertz, radians, kilograms, newtons) whatever unit the YAML used. Built once by
+// scene::load() and never changed afterwards; every default lives here, so a scene only
+// says what differs (docs/scenes.md is the reference of every key).
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace systole::scene {
+
+/// Where a value was written: for error messages that point back into the YAML.
+struct Origin {
+  std::string file;  ///< Scene path, or "-D key=value" for a command-line override.
+  int line = 0;      ///< 1-based; 0 when unknown.
+  int column = 0;    ///< 1-based; 0 when unknown.
+};
+
+/// An sRGB colour as users pick them ("#b8322a" or [0.72, 0.2, 0.16]), each channel in
+/// [0, 1]; render/ converts to linear light for shading and back for output.
+using Color = Eigen::Vector3d;
+
+// ---------------------------------------------------------------------------------------
+// Drive: the periodic activation that shortens a region's springs,
+// L(t) = L0 * (1 - amplitude * phi(t - delay)), phi in [0, 1] for the templates.
+
+enum class Waveform {
+  kNone,       ///< No drive: the region is passive.
+  kSine,       ///< phi = (1 - cos(2 pi f t + phase)) / 2.
+  kFourier,    ///< phi = 1/2 + sum_k a_k cos(2 pi k f t + phase_k), harmonics from k = 1.
+  kCardiac,    ///< Raised-cosine contraction over the systolic fraction of each beat.
+  kBreathing,  ///< Asymmetric: raised-cosine inhale over inhale_fraction, slower exhale.
+  kSamples,    ///< A table of phi over one period, interpolated periodically.
+};
+
+struct Harmonic {
+  double amplitude = 0;  ///< Relative to the drive amplitude. unit: 1
+  double phase_rad = 0;  ///< unit: rad
+};
+
+struct Drive {
+  Waveform waveform = Waveform::kNone;
+  double rate_hz = 0;       ///< Cycles per second at the start of the clip. unit: Hz
+  double rate_end_hz = 0;   ///< When > 0, the rate ramps linearly to this by the clip's end. unit: Hz
+  double amplitude = 0;     ///< Fraction of rest length removed at phi = 1. unit: 1, in [0, 1)
+  double phase_rad = 0;     ///< unit: rad
+  double delay_s = 0;       ///< Activation delay (atria before ventricles). unit: s
+  std::vector<Harmonic> harmonics;  ///< kFourier: harmonic k = index + 1.
+  double systolic_fraction = 0.35;  ///< kCardiac: part of the period spent contracting. unit: 1
+  double inhale_fraction = 0.4;     ///< kBreathing: part of the period spent inhaling. unit: 1
+  std::vector<double> samples;      ///< kSamples: phi over one period, evenly spaced.
+  double irregularity = 0;          ///< Seeded beat-to-beat jitter of the period (0 = regular). unit: 1
+};
+
+// ---------------------------------------------------------------------------------------
+// Regions: parts of an organ's surface with their own rhythm and stiffness.
+
+enum class SelectorKind {
+  kAll,        ///< Every vertex.
+  kPart,       ///< A named part: a procedural organ's anatomical part, or a file's sub-mesh name.
+  kSphere,     ///< Vertices within radius of center (organ space, after units and centring).
+  kBox,        ///< Vertices inside the axis-aligned box [min, max].
+  kHalfSpace,  ///< Vertices with dot(x - point, normal) >= 0.
+};
+
+struct Selector {
+  SelectorKind kind = SelectorKind::kAll;
+  std::string part;                                 ///< kPart
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< kSphere. unit: m
+  double radius_m = 0;                              ///< kSphere. unit: m
+  Eigen::Vector3d min = Eigen::Vector3d::Zero();     ///< kBox. unit: m
+  Eigen::Vector3d max = Eigen::Vector3d::Zero();     ///< kBox. unit: m
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< kHalfSpace. unit: m
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY(); ///< kHalfSpace (normalised). unit: 1
+  Origin origin;
+};
+
+struct Region {
+  std::string name;
+  /// Union of selectors. Empty: the part of the same name. Regions are applied in order,
+  /// a later region taking the vertices it selects from an earlier one.
+  std::vector<Selector> select;
+  Drive drive;
+  double stiffness_scale = 1;  ///< Multiplies the body's stiffness. unit: 1
+  double damping_scale = 1;    ///< Multiplies the body's damping. unit: 1
+  bool pinned = false;         ///< Fixed in place: costs nothing in the solve.
+  bool has_color = false;
+  Color color = Color(0.8, 0.3, 0.3);  ///< Used when has_color; else the organ's material.
+  Origin origin;
+};
+
+// ---------------------------------------------------------------------------------------
+// Organs.
+
+struct MeshSource {
+  std::string file;        ///< A mesh file, resolved against the scene's folder by load(); or empty.
+  std::string procedural;  ///< A generated organ: "heart" (more in mesh/procedural/), or empty.
+  int detail = 3;          ///< Procedural level of detail, 1 (coarse) to 6 (fine).
+  double unit_m = 1;       ///< Length of one file unit in metres (mm = 0.001). unit: m
+  bool center = true;      ///< Move the file's bounding-box centre to the origin.
+  Origin origin;
+};
+
+struct Transform {
+  Eigen::Vector3d translate_m = Eigen::Vector3d::Zero();  ///< unit: m
+  Eigen::Vector3d rotate_rad = Eigen::Vector3d::Zero();   ///< Euler X, then Y, then Z. unit: rad
+  double scale = 1;                                       ///< unit: 1
+};
+
+struct Material {
+  Color color = Color(0.72, 0.16, 0.14);
+  double specular = 0.35;  ///< Strength of the highlight. unit: 1
+  double shininess = 24;   ///< Blinn-Phong exponent. unit: 1
+};
+
+struct Body {
+  double mass_kg = 0.3;           ///< Total mass, spread over vertices by area. unit: kg
+  double stiffness_N_per_m = 400; ///< Spring stiffness of each surface edge. unit: N/m
+  double damping_s = 0.01;        ///< Stiffness-proportional damping time (c = k * damping_s). unit: s
+  double volume_stiffness_Pa = 20000;  ///< Bulk modulus of the enclosed volume; 0 = no volume constraint. unit: Pa
+  double drag_per_s = 1.0;        ///< Velocity damping towards rest (the surrounding tissue). unit: 1/s
+};
+
+struct Organ {
+  std::string name;
+  MeshSource mesh;
+  Transform transform;
+  Material material;
+  Body body;
+  std::vector<Region> regions;
+  Origin origin;
+};
+
+// ---------------------------------------------------------------------------------------
+// Solver, view and output.
+
+enum class SolverMethod { kXpbd, kExplicit, kImplicit };
+
+struct Solver {
+  SolverMethod method = SolverMethod::kXpbd;
+  bool auto_dt = false;        ///< Choose dt from the drive and stiffness (sim core issue).
+  double dt_s = 1.0 / 240.0;   ///< Step size. unit: s
+  int substeps = 4;            ///< XPBD substeps per step. unit: 1
+  Origin origin;
+};
+
+struct Camera {
+  Eigen::Vector3d position_m = Eigen::Vector3d(0, 0, 0.4);  ///< unit: m
+  Eigen::Vector3d target_m = Eigen::Vector3d::Zero();       ///< unit: m
+  Eigen::Vector3d up = Eigen::Vector3d::UnitY();            ///< unit: 1
+  double fov_rad = 0.6981317007977318;                      ///< Vertical field of view (40 deg). unit: rad
+};
+
+struct Light {
+  Eigen::Vector3d direction = Eigen::Vector3d(-0.4, -0.6, -1.0);  ///< Direction the light travels. unit: 1
+  Color color = Color(1, 1, 1);
+  double intensity = 1;  ///< unit: 1
+};
+
+struct Output {
+  std::string file;        ///< Video path; empty: out/<scene name>.mp4 beside the working dir.
+  int width = 1280;        ///< unit: px, even
+  int height = 720;        ///< unit: px, even
+  double fps = 30;         ///< unit: 1/s
+  double duration_s = 10;  ///< unit: s
+  int crf = 20;            ///< x264 constant rate factor, 0 (lossless) to 51.
+  std::string preset = "veryfast";  ///< x264 preset.
+  int antialias = 4;       ///< MSAA samples: 0 (off), 2 or 4.
+  Color background = Color(0.06, 0.07, 0.09);
+
+  int frame_count() const;  ///< round(duration * fps).
+};
+
+struct Scene {
+  std::string path;         ///< The YAML file it came from.
+  std::string name;         ///< File stem: names default outputs.
+  std::uint64_t seed = 1;   ///< Seeds every random choice (irregular rhythms, tuning).
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< unit: m/s^2
+  std::vector<Organ> organs;
+  Solver solver;
+  Camera camera;
+  std::vector<Light> lights;
+  Output output;
+};
+
+}  // namespace systole::scene
