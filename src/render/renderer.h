@@ -1,6 +1,11 @@
 #pragma once
 // The off-screen rasterizer: an OSMesa OpenGL 4.5 core-profile context drawing organ
 // surfaces into a (multisampled) framebuffer, read back as an RGB image.
+//
+// Each Renderer owns its own context, so several may live in one process; a Renderer makes
+// its context current on the calling thread at every call, and must be used by one thread
+// at a time. llvmpipe's thread count is LP_NUM_THREADS, read when the first context of the
+// process is created: the caller sets it.
 
 #include <Eigen/Core>
 #include <memory>
@@ -12,6 +17,9 @@
 
 namespace systole::render {
 
+/// Most directional lights draw() shades with (shaders/organ.frag.glsl has the same bound).
+inline constexpr int kMaxLights = 8;
+
 struct GlInfo {
   std::string vendor;
   std::string renderer;      ///< e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
@@ -22,7 +30,8 @@ struct GlInfo {
 class Renderer {
  public:
   /// Creates the context and a width x height framebuffer with `msaa_samples` (0, 2 or 4).
-  /// Throws Error(kInternal) when OSMesa or a shader fails, with the driver's log.
+  /// Throws Error(kInternal) when OSMesa or a shader fails, with the driver's log, and
+  /// Error(kUsage) for a size or sample count it cannot make.
   Renderer(int width, int height, int msaa_samples);
   ~Renderer();
   Renderer(const Renderer&) = delete;
@@ -30,15 +39,22 @@ class Renderer {
 
   GlInfo info() const;
 
-  /// Registers a surface whose topology never changes; returns its id. Colours are per
-  /// vertex (linear RGB).
+  /// Registers a surface whose topology never changes; returns its id (0, 1, ...).
+  /// The vertex count is vertex_colors.size(); colours are sRGB per vertex (region colours),
+  /// decoded to linear light in the shader. Triangles are counter-clockwise seen from
+  /// outside (back faces are culled). The surface is drawn once update_surface gave it
+  /// positions. Throws Error(kInternal) for an index out of range.
   int add_surface(const std::vector<Eigen::Vector3i>& triangles,
                   const std::vector<scene::Color>& vertex_colors, const scene::Material& material);
 
-  /// Uploads a surface's current vertex positions and unit normals, 3 floats per vertex.
+  /// Uploads a surface's current vertex positions (unit: m, world space) and unit normals,
+  /// 3 floats per vertex, vertex count as given to add_surface. No GL allocation.
+  /// Throws Error(kInternal) for an unknown id or a non-finite position.
   void update_surface(int id, const float* positions_xyz, const float* normals_xyz);
 
   /// Draws every surface and waits for the rasterizer to finish (so its cost is measured here).
+  /// `background` is sRGB. Near and far planes follow the surfaces' bounding sphere.
+  /// Throws Error(kDataError) for more than kMaxLights lights or a degenerate camera.
   void draw(const scene::Camera& camera, const std::vector<scene::Light>& lights,
             const scene::Color& background);
 

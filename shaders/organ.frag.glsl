@@ -1,0 +1,66 @@
+#version 330 core
+// Wet living tissue for teaching videos, shaded in linear light:
+//  - wrap-around diffuse: light bleeds past the terminator as it does through
+//    translucent tissue, tinted by the tissue's own hue (red scatters further in flesh);
+//  - Blinn-Phong highlight with the material's strength and exponent (the wet sheen);
+//  - hemisphere ambient (sky above, warm bounce below, "up" = the camera's up);
+//  - a subtle rim light that keeps the silhouette readable against a dark background.
+// Output is encoded to sRGB here, so the framebuffer is plain 8-bit sRGB.
+
+const int kMaxLights = 8;    // keep equal to render::kMaxLights
+const float kWrap = 0.45;    // how far light wraps past the terminator, unit: 1 (of N.L)
+const float kRim = 0.12;     // rim light strength, unit: 1
+const float kRimPower = 3.0;
+
+in vec3 v_position;
+in vec3 v_normal;
+in vec3 v_albedo;
+
+uniform vec3 u_camera_position;               // world space, metres
+uniform int u_light_count;
+uniform vec3 u_light_to_light[kMaxLights];    // unit vector from the surface towards the light
+uniform vec3 u_light_radiance[kMaxLights];    // linear RGB x intensity
+uniform vec3 u_up;                            // unit: the hemisphere's "sky" direction
+uniform vec3 u_sky;                           // linear RGB ambient from above
+uniform vec3 u_ground;                        // linear RGB ambient from below
+uniform float u_specular;                     // highlight strength, unit: 1
+uniform float u_shininess;                    // Blinn-Phong exponent, unit: 1
+
+out vec4 frag_color;
+
+vec3 linear_to_srgb(vec3 c) {
+  c = clamp(c, 0.0, 1.0);
+  vec3 lo = c * 12.92;
+  vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
+  return mix(hi, lo, vec3(lessThanEqual(c, vec3(0.0031308))));
+}
+
+void main() {
+  vec3 n = normalize(v_normal);
+  vec3 v = normalize(u_camera_position - v_position);
+  vec3 albedo = v_albedo;
+  // The tissue's hue at full strength: a saturated red scatters red, a pale region scatters white.
+  vec3 hue = albedo / max(max(albedo.r, max(albedo.g, albedo.b)), 1e-4);
+
+  float hemi = 0.5 + 0.5 * dot(n, u_up);
+  vec3 color = albedo * mix(u_ground, u_sky, hemi);
+
+  // Blinn-Phong normalised so the highlight's energy does not depend on the exponent.
+  float spec_norm = (u_shininess + 8.0) / 25.132741;  // (n + 8) / (8 pi)
+  for (int i = 0; i < u_light_count; ++i) {
+    vec3 l = u_light_to_light[i];
+    float n_dot_l = dot(n, l);
+    float lambert = max(n_dot_l, 0.0);
+    float wrapped = max((n_dot_l + kWrap) / (1.0 + kWrap), 0.0);
+    vec3 diffuse = albedo * (lambert + (wrapped - lambert) * hue);
+    vec3 h = normalize(l + v);
+    float spec = u_specular * spec_norm * pow(max(dot(n, h), 0.0), u_shininess) *
+                 smoothstep(0.0, 0.15, n_dot_l);
+    color += u_light_radiance[i] * (diffuse + vec3(spec));
+  }
+
+  float rim = pow(1.0 - max(dot(n, v), 0.0), kRimPower);
+  color += kRim * rim * mix(u_sky, vec3(1.0), 0.5) * (0.5 + 0.5 * hue);
+
+  frag_color = vec4(linear_to_srgb(color), 1.0);
+}
