@@ -1,0 +1,37 @@
+#pragma once
+// The frame loop: simulate -> render -> read back -> encode, for one scene.
+
+#include <filesystem>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace systole::app {
+
+struct RenderRequest {
+  std::filesystem::path video;    ///< MP4 to write; empty: no video.
+  std::filesystem::path png_dir;  ///< Folder for numbered PNG frames; empty: none.
+  bool show_progress = false;
+};
+
+/// What each stage cost, summed over the clip.
+struct StageTimes {
+  int frames = 0;
+  double simulate_s = 0;   ///< unit: s
+  double render_s = 0;     ///< unit: s
+  double readback_s = 0;   ///< unit: s
+  double encode_s = 0;     ///< unit: s (video and PNG writing)
+  double wall_s = 0;       ///< Whole run including set-up. unit: s
+};
+
+/// Renders the clip. Outputs appear only when complete (temporary file + rename); a
+/// failure leaves earlier outputs untouched. Throws systole::Error.
+StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request);
+
+/// "simulate 1.2 ms/frame, render ..." for the end-of-run summary.
+std::string describe(const StageTimes& times);
+
+/// The default video path for a scene: the scene's output.file, else out/<name>.mp4.
+std::filesystem::path default_video_path(const scene::Scene& scene);
+
+}  // namespace systole::app

@@ -1,0 +1,54 @@
+#include "app/summary.h"
+
+#include <sstream>
+
+namespace systole::app {
+namespace {
+
+const char* method_name(scene::SolverMethod m) {
+  switch (m) {
+    case scene::SolverMethod::kXpbd: return "xpbd";
+    case scene::SolverMethod::kExplicit: return "explicit";
+    case scene::SolverMethod::kImplicit: return "implicit";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string summarize(const scene::Scene& scene, const World& world) {
+  std::ostringstream s;
+  s << "scene " << scene.path << "\n";
+  for (std::size_t o = 0; o < world.organs.size(); ++o) {
+    const auto& organ = scene.organs[o];
+    const auto& body = world.organs[o];
+    const auto& report = body.geometry.report;
+    s << "organ " << organ.name << ": " << report.vertices << " vertices, " << report.triangles << " triangles, "
+      << (report.closed() ? "closed" : "open") << ", volume " << report.volume_m3 * 1e6 << " cm^3\n";
+    for (const auto& note : report.notes) s << "  mesh: " << note << "\n";
+    std::vector<int> counts(organ.regions.size() + 1, 0);
+    for (int r : body.geometry.vertex_region) ++counts[r + 1];
+    if (counts[0] > 0) s << "  region (undriven body): " << counts[0] << " vertices\n";
+    for (std::size_t r = 0; r < organ.regions.size(); ++r) {
+      const auto& region = organ.regions[r];
+      s << "  region " << region.name << ": " << counts[r + 1] << " vertices";
+      if (region.pinned) s << ", pinned";
+      if (region.drive.waveform != scene::Waveform::kNone) {
+        s << ", drive " << region.drive.rate_hz * 60.0 << " per min, amplitude " << region.drive.amplitude;
+        if (region.drive.delay_s != 0) s << ", delay " << region.drive.delay_s * 1e3 << " ms";
+      }
+      if (region.stiffness_scale != 1.0) s << ", stiffness x" << region.stiffness_scale;
+      s << "\n";
+    }
+    const auto& m = body.model;
+    s << "  constraints: " << m.springs.size() << " springs in " << m.springs.colors() << " colours";
+    s << (m.volume.enabled ? ", 1 volume constraint" : ", no volume constraint") << "\n";
+  }
+  s << "solver " << method_name(scene.solver.method) << ": dt " << world.dt_s * 1e3 << " ms ("
+    << world.steps_per_frame << " steps per frame), " << scene.solver.substeps << " substeps\n";
+  s << "output " << scene.output.width << "x" << scene.output.height << ", " << scene.output.fps << " fps, "
+    << scene.output.frame_count() << " frames (" << scene.output.duration_s << " s)\n";
+  return s.str();
+}
+
+}  // namespace systole::app

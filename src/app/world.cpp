@@ -1,0 +1,42 @@
+#include "app/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "common/error.h"
+#include "sim/step.h"
+
+namespace systole::app {
+
+World build_world(const scene::Scene& scene) {
+  World w;
+  w.fps = scene.output.fps;
+  const double frame_s = 1.0 / scene.output.fps;
+  w.steps_per_frame = std::max(1, static_cast<int>(std::lround(frame_s / scene.solver.dt_s)));
+  w.dt_s = frame_s / w.steps_per_frame;
+  for (const auto& organ : scene.organs) {
+    OrganBody body;
+    body.geometry = mesh::build_organ_geometry(organ);
+    body.model = sim::build_model(organ, body.geometry, scene.solver, scene.gravity, scene.output.duration_s);
+    body.state = sim::initial_state(body.model);
+    w.organs.push_back(std::move(body));
+  }
+  return w;
+}
+
+void advance_to_frame(World& w, int frame) {
+  for (; w.frames_done < frame; ++w.frames_done) {
+    for (auto& body : w.organs) {
+      for (int k = 0; k < w.steps_per_frame; ++k) sim::step(body.model, body.state, w.dt_s);
+      if (auto problem = sim::diagnose(body.model, body.state)) {
+        std::ostringstream m;
+        m << "simulation diverged at frame " << w.frames_done + 1 << " (t = " << body.state.time_s << " s): "
+          << *problem << ". Remedy: " << sim::divergence_remedy(body.model) << ".";
+        throw Error(ExitCode::kDiverged, m.str());
+      }
+    }
+  }
+}
+
+}  // namespace systole::app

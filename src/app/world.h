@@ -1,0 +1,37 @@
+#pragma once
+// The simulated scene: every organ's geometry, body model and state, advanced together
+// on one clock.
+
+#include <vector>
+
+#include "mesh/organ.h"
+#include "scene/scene.h"
+#include "sim/model.h"
+#include "sim/state.h"
+
+namespace systole::app {
+
+struct OrganBody {
+  mesh::OrganGeometry geometry;
+  sim::Model model;
+  sim::State state;
+};
+
+struct World {
+  std::vector<OrganBody> organs;
+  int steps_per_frame = 1;  ///< The solver step divides the frame period exactly.
+  double dt_s = 0;          ///< unit: s
+  double fps = 30;          ///< unit: 1/s
+  int frames_done = 0;      ///< Frames the world has been advanced through.
+};
+
+/// Loads or generates every organ and builds its body. The step is the scene's dt rounded
+/// so a whole number of steps makes one frame.
+World build_world(const scene::Scene& scene);
+
+/// Steps every organ to the time of `frame` (frames only move forward), checking the
+/// bodies' health at every frame. Throws Error(kDiverged) with the frame, the time, the
+/// cause and a remedy when a body blew up.
+void advance_to_frame(World& world, int frame);
+
+}  // namespace systole::app

@@ -1,0 +1,101 @@
+#include "sim/drive.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace systole::sim {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+/// Raised-cosine pulse over [0, width): 0 at the ends, 1 in the middle.
+double raised_cosine(double u, double width) {
+  if (u >= width) return 0.0;
+  return 0.5 * (1.0 - std::cos(kTwoPi * u / width));
+}
+
+}  // namespace
+
+double drive_cycles(const scene::Drive& drive, double t_s, double ramp_s) {
+  if (drive.rate_end_hz <= 0 || ramp_s <= 0) return drive.rate_hz * t_s;
+  const double f0 = drive.rate_hz, f1 = drive.rate_end_hz;
+  const double t = std::min(t_s, ramp_s);
+  double cycles = f0 * t + 0.5 * (f1 - f0) * t * t / ramp_s;
+  if (t_s > ramp_s) cycles += f1 * (t_s - ramp_s);
+  return cycles;
+}
+
+double waveform_value(const scene::Drive& drive, double u) {
+  using scene::Waveform;
+  switch (drive.waveform) {
+    case Waveform::kNone:
+      return 0.0;
+    case Waveform::kSine:
+      return 0.5 * (1.0 - std::cos(kTwoPi * u + drive.phase_rad));
+    case Waveform::kFourier: {
+      double phi = 0.5;
+      for (std::size_t k = 0; k < drive.harmonics.size(); ++k) {
+        const auto& h = drive.harmonics[k];
+        phi += h.amplitude * std::cos(kTwoPi * double(k + 1) * u + h.phase_rad + drive.phase_rad);
+      }
+      return std::clamp(phi, 0.0, 1.0);
+    }
+    case Waveform::kCardiac:
+      // Contraction occupies the systolic fraction of the beat; diastole is at rest.
+      return raised_cosine(u, drive.systolic_fraction);
+    case Waveform::kBreathing: {
+      // Active inhale (rising half-cosine), then a slower passive exhale.
+      const double in = drive.inhale_fraction;
+      if (u < in) return 0.5 * (1.0 - std::cos(std::numbers::pi * u / in));
+      return 0.5 * (1.0 + std::cos(std::numbers::pi * (u - in) / (1.0 - in)));
+    }
+    case Waveform::kSamples: {
+      const auto& s = drive.samples;
+      if (s.empty()) return 0.0;
+      const double x = u * double(s.size());
+      const std::size_t i = std::min(static_cast<std::size_t>(x), s.size() - 1);
+      const double f = x - double(i);
+      // Periodic Catmull-Rom: smooth, passes through every sample.
+      const std::size_t n = s.size();
+      const double p0 = s[(i + n - 1) % n], p1 = s[i], p2 = s[(i + 1) % n], p3 = s[(i + 2) % n];
+      const double v = 0.5 * ((2 * p1) + (-p0 + p2) * f + (2 * p0 - 5 * p1 + 4 * p2 - p3) * f * f +
+                              (-p0 + 3 * p1 - 3 * p2 + p3) * f * f * f);
+      return std::clamp(v, 0.0, 1.0);
+    }
+  }
+  return 0.0;
+}
+
+double activation(const scene::Drive& drive, double t_s, double ramp_s) {
+  if (drive.waveform == scene::Waveform::kNone || drive.rate_hz <= 0) return 0.0;
+  const double local_t = t_s - drive.delay_s;
+  if (local_t < 0 && drive.waveform != scene::Waveform::kSine && drive.waveform != scene::Waveform::kFourier) {
+    return 0.0;  // Templates start at rest; the delay only postpones the first beat.
+  }
+  const double cycles = drive_cycles(drive, local_t, ramp_s);
+  const double u = cycles - std::floor(cycles);
+  return waveform_value(drive, u);
+}
+
+double highest_frequency_hz(const scene::Drive& drive) {
+  using scene::Waveform;
+  const double rate = std::max(drive.rate_hz, drive.rate_end_hz);
+  switch (drive.waveform) {
+    case Waveform::kNone:
+      return 0.0;
+    case Waveform::kSine:
+      return rate;
+    case Waveform::kFourier:
+      return rate * double(std::max<std::size_t>(1, drive.harmonics.size()));
+    case Waveform::kCardiac:
+      return rate / drive.systolic_fraction;
+    case Waveform::kBreathing:
+      return rate / (2.0 * std::min(drive.inhale_fraction, 1.0 - drive.inhale_fraction));
+    case Waveform::kSamples:
+      return rate * double(std::max<std::size_t>(1, drive.samples.size())) / 2.0;
+  }
+  return rate;
+}
+
+}  // namespace systole::sim

@@ -1,0 +1,25 @@
+#pragma once
+// Region activation signals: phi(t) in [0, 1] (0 relaxed, 1 fully contracted) that set
+// the rest lengths L(t) = L0 * (1 - amplitude * phi(t - delay)) of a region's springs
+// (Kenwright & Sinmai, "Lightweight Self-Driven Deformable Organ Animations", §3).
+
+#include "scene/scene.h"
+
+namespace systole::sim {
+
+/// Number of cycles completed by time t_s: the integral of the rate, which may ramp
+/// linearly from rate_hz to rate_end_hz over [0, ramp_s] and stay there. unit: cycles
+double drive_cycles(const scene::Drive& drive, double t_s, double ramp_s);
+
+/// phi of one period's waveform at fraction u of the period, u in [0, 1). unit: 1
+double waveform_value(const scene::Drive& drive, double u);
+
+/// The activation phi at time t_s (delay applied; before the delay the region is at rest
+/// phase 0). `ramp_s` is the clip length over which a rate ramp runs.
+double activation(const scene::Drive& drive, double t_s, double ramp_s);
+
+/// Highest frequency present in the drive at any time: rate x highest harmonic, or the
+/// sharpest template's equivalent. unit: Hz
+double highest_frequency_hz(const scene::Drive& drive);
+
+}  // namespace systole::sim

@@ -1,0 +1,129 @@
+#include "sim/model.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+#include "sim/graph_coloring.h"
+
+namespace systole::sim {
+namespace {
+
+/// Unique undirected edges of a triangle surface, in a deterministic order.
+std::vector<std::pair<int, int>> unique_edges(const std::vector<Eigen::Vector3i>& triangles) {
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(triangles.size() * 3);
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int i = t[k], j = t[(k + 1) % 3];
+      edges.emplace_back(std::min(i, j), std::max(i, j));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+/// Lumped masses: each triangle gives a third of its share of the organ's mass to each corner.
+Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles,
+                              double total_mass_kg) {
+  Eigen::VectorXd area = Eigen::VectorXd::Zero(x.cols());
+  double total_area = 0;
+  for (const auto& t : triangles) {
+    const double a = 0.5 * (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0])).norm();
+    for (int k = 0; k < 3; ++k) area[t[k]] += a / 3.0;
+    total_area += a;
+  }
+  Eigen::VectorXd mass(x.cols());
+  // A vertex in no triangle (or only degenerate ones) still needs a finite mass.
+  const double floor_kg = total_mass_kg / double(std::max<Eigen::Index>(1, x.cols())) * 1e-3;
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    mass[i] = std::max(floor_kg, total_area > 0 ? total_mass_kg * area[i] / total_area : 0.0);
+  }
+  return mass;
+}
+
+}  // namespace
+
+double enclosed_volume(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles) {
+  double six_v = 0;
+  for (const auto& t : triangles) six_v += x.col(t[0]).dot(x.col(t[1]).cross(x.col(t[2])));
+  return six_v / 6.0;
+}
+
+Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry, const scene::Solver& solver,
+                  const Eigen::Vector3d& gravity, double clip_s) {
+  const auto& surface = geometry.mesh.surface;
+  Model m;
+  m.name = organ.name;
+  m.method = solver.method;
+  m.substeps = solver.substeps;
+  m.gravity = gravity;
+  m.drag_per_s = organ.body.drag_per_s;
+  m.ramp_s = clip_s;
+  m.regions = organ.regions;
+  m.vertex_region = geometry.vertex_region;
+
+  const int n = static_cast<int>(surface.positions.size());
+  m.rest_positions.resize(3, n);
+  for (int i = 0; i < n; ++i) m.rest_positions.col(i) = surface.positions[i];
+  if (n > 0) {
+    m.rest_extent_m = (m.rest_positions.rowwise().maxCoeff() - m.rest_positions.rowwise().minCoeff()).norm();
+  }
+
+  const Eigen::VectorXd mass = lumped_masses(m.rest_positions, surface.triangles, organ.body.mass_kg);
+  m.inverse_mass = mass.cwiseInverse();
+  auto region_of = [&](int v) { return m.vertex_region.empty() ? -1 : m.vertex_region[v]; };
+  for (int i = 0; i < n; ++i) {
+    const int r = region_of(i);
+    if (r >= 0 && m.regions[r].pinned) m.inverse_mass[i] = 0;
+  }
+
+  // Springs on every surface edge; a spring between two pinned particles does nothing.
+  std::vector<int> a, b;
+  for (const auto& [i, j] : unique_edges(surface.triangles)) {
+    if (m.inverse_mass[i] == 0 && m.inverse_mass[j] == 0) continue;
+    a.push_back(i);
+    b.push_back(j);
+  }
+  const std::vector<int> color = color_pairs(a, b, n);
+  const int colors = a.empty() ? 0 : *std::max_element(color.begin(), color.end()) + 1;
+  std::vector<int> order(a.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int p, int q) { return color[p] < color[q]; });
+
+  Springs& s = m.springs;
+  s.color_begin.assign(colors + 1, 0);
+  for (int c : color) ++s.color_begin[c + 1];
+  std::partial_sum(s.color_begin.begin(), s.color_begin.end(), s.color_begin.begin());
+  for (int idx : order) {
+    const int i = a[idx], j = b[idx];
+    const int ri = region_of(i), rj = region_of(j);
+    // Region parameters blend across a boundary: a spring joining two regions takes the
+    // mean of their scales, so neighbouring regions of very different stiffness share a
+    // transition ring instead of a seam.
+    const double stiffness_scale = 0.5 * ((ri >= 0 ? m.regions[ri].stiffness_scale : 1.0) +
+                                          (rj >= 0 ? m.regions[rj].stiffness_scale : 1.0));
+    const double damping_scale = 0.5 * ((ri >= 0 ? m.regions[ri].damping_scale : 1.0) +
+                                        (rj >= 0 ? m.regions[rj].damping_scale : 1.0));
+    s.a.push_back(i);
+    s.b.push_back(j);
+    s.rest_m.push_back((m.rest_positions.col(i) - m.rest_positions.col(j)).norm());
+    s.compliance_m_per_N.push_back(1.0 / (organ.body.stiffness_N_per_m * stiffness_scale));
+    s.damping_s.push_back(organ.body.damping_s * damping_scale);
+    s.region_a.push_back(ri);
+    s.region_b.push_back(rj);
+  }
+
+  // The volume constraint needs a closed surface: on an open one "enclosed volume" means nothing.
+  if (organ.body.volume_stiffness_Pa > 0 && geometry.report.closed() && geometry.report.volume_m3 > 0) {
+    m.volume.enabled = true;
+    m.volume.triangles = surface.triangles;
+    m.volume.rest_m3 = enclosed_volume(m.rest_positions, surface.triangles);
+    m.volume.compliance_m5_per_N = m.volume.rest_m3 / organ.body.volume_stiffness_Pa;
+  }
+  return m;
+}
+
+}  // namespace systole::sim

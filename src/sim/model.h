@@ -1,0 +1,63 @@
+#pragma once
+// sim::Model: everything about a soft body that stepping never changes - rest shape,
+// masses, constraints, regions and their drives. Built once from an organ's geometry and
+// scene settings (MuJoCo's mjModel / mjData split: the changing part is sim::State).
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "mesh/organ.h"
+#include "scene/scene.h"
+
+namespace systole::sim {
+
+/// Distance constraints ("springs") in structure-of-arrays form, ordered by colour so
+/// that the springs of one colour share no particle: a colour can be solved in any order
+/// or in parallel with bit-identical results.
+struct Springs {
+  std::vector<int> a, b;                 ///< Particle indices.
+  std::vector<double> rest_m;            ///< Rest length L0. unit: m
+  std::vector<double> compliance_m_per_N;  ///< 1 / stiffness. unit: m/N
+  std::vector<double> damping_s;         ///< Stiffness-proportional damping time. unit: s
+  std::vector<int> region_a, region_b;   ///< Drive region of each end (-1: undriven).
+  std::vector<int> color_begin;          ///< Springs of colour c: [color_begin[c], color_begin[c+1]).
+
+  int size() const { return static_cast<int>(a.size()); }
+  int colors() const { return static_cast<int>(color_begin.size()) - 1; }
+};
+
+/// Keeps the enclosed volume of a closed surface near a (possibly driven) rest volume.
+struct VolumeConstraint {
+  bool enabled = false;
+  std::vector<Eigen::Vector3i> triangles;  ///< The closed surface, outward CCW.
+  double rest_m3 = 0;                      ///< unit: m^3
+  double compliance_m5_per_N = 0;          ///< V0 / bulk modulus, for C = V - V0. unit: m^5/N
+};
+
+struct Model {
+  std::string name;                         ///< The organ's name, for messages.
+  scene::SolverMethod method = scene::SolverMethod::kXpbd;
+  int substeps = 4;
+  Eigen::Matrix3Xd rest_positions;          ///< unit: m
+  Eigen::VectorXd inverse_mass;             ///< unit: 1/kg; 0 = pinned.
+  Springs springs;
+  VolumeConstraint volume;
+  std::vector<scene::Region> regions;       ///< Drives by region index.
+  std::vector<int> vertex_region;           ///< Per particle; -1 = undriven body.
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< unit: m/s^2
+  double drag_per_s = 0;                    ///< unit: 1/s
+  double ramp_s = 0;                        ///< Length of the clip, over which rate ramps run. unit: s
+  double rest_extent_m = 0;                 ///< Bounding-box diagonal of the rest shape. unit: m
+
+  int particle_count() const { return static_cast<int>(rest_positions.cols()); }
+};
+
+/// Builds the body of one organ. `clip_s` is the clip's duration (rate ramps span it).
+Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry, const scene::Solver& solver,
+                  const Eigen::Vector3d& gravity, double clip_s);
+
+/// Enclosed volume of a closed, outward-oriented triangle surface (divergence theorem).
+double enclosed_volume(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles);
+
+}  // namespace systole::sim

@@ -1,0 +1,17 @@
+#include "sim/state.h"
+
+namespace systole::sim {
+
+State initial_state(const Model& model) {
+  State s;
+  const Eigen::Index n = model.particle_count();
+  s.x = model.rest_positions;
+  s.v = Eigen::Matrix3Xd::Zero(3, n);
+  s.spring_lambda = Eigen::VectorXd::Zero(model.springs.size());
+  s.x_prev = s.x;
+  s.region_contraction = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.regions.size()));
+  s.volume_gradient = Eigen::Matrix3Xd::Zero(3, model.volume.enabled ? n : 0);
+  return s;
+}
+
+}  // namespace systole::sim

@@ -1,0 +1,28 @@
+#pragma once
+// sim::State: everything that changes while a body moves. Stepping is a pure function of
+// (Model, State), so snapshots, restarts and determinism tests are plain copies.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "sim/model.h"
+
+namespace systole::sim {
+
+struct State {
+  double time_s = 0;                 ///< unit: s
+  Eigen::Matrix3Xd x;                ///< Positions. unit: m
+  Eigen::Matrix3Xd v;                ///< Velocities. unit: m/s
+  Eigen::VectorXd spring_lambda;     ///< XPBD multipliers of the last substep; force = lambda / h^2. unit: N s^2
+  double volume_lambda = 0;          ///< unit: N s^2 / m^2
+
+  // Scratch reused by every step so stepping never allocates.
+  Eigen::Matrix3Xd x_prev;           ///< Positions at the start of the substep. unit: m
+  Eigen::VectorXd region_contraction;  ///< amplitude * phi per region at the current substep. unit: 1
+  Eigen::Matrix3Xd volume_gradient;  ///< dV/dx per particle. unit: m^2
+};
+
+/// The body at rest at t = 0.
+State initial_state(const Model& model);
+
+}  // namespace systole::sim

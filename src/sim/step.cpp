@@ -1,0 +1,62 @@
+#include "sim/step.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "common/error.h"
+#include "sim/xpbd.h"
+
+namespace systole::sim {
+
+void step(const Model& model, State& state, double dt_s) {
+  switch (model.method) {
+    case scene::SolverMethod::kXpbd:
+      xpbd_step(model, state, dt_s);
+      return;
+    case scene::SolverMethod::kExplicit:
+    case scene::SolverMethod::kImplicit:
+      break;
+  }
+  throw Error(ExitCode::kDataError, "solver.method: only 'xpbd' is available in this build");
+}
+
+std::optional<std::string> diagnose(const Model& model, const State& s) {
+  for (Eigen::Index i = 0; i < s.x.cols(); ++i) {
+    if (!s.x.col(i).allFinite() || !s.v.col(i).allFinite()) {
+      std::ostringstream m;
+      m << "particle " << i << " of '" << model.name << "' has a non-finite position or velocity";
+      return m.str();
+    }
+  }
+  if (s.x.cols() == 0) return std::nullopt;
+  const double extent = (s.x.rowwise().maxCoeff() - s.x.rowwise().minCoeff()).norm();
+  // Ten times the rest size: no drive or poke of a soft organ does that; an unstable step does.
+  if (model.rest_extent_m > 0 && extent > 10.0 * model.rest_extent_m) {
+    std::ostringstream m;
+    m << "'" << model.name << "' grew to " << extent / model.rest_extent_m << " times its rest size";
+    return m.str();
+  }
+  if (model.volume.enabled) {
+    const double v = enclosed_volume(s.x, model.volume.triangles);
+    if (v < 0.1 * model.volume.rest_m3) {
+      std::ostringstream m;
+      m << "'" << model.name << "' collapsed to " << 100.0 * v / model.volume.rest_m3 << "% of its rest volume";
+      return m.str();
+    }
+  }
+  return std::nullopt;
+}
+
+std::string divergence_remedy(const Model& model) {
+  switch (model.method) {
+    case scene::SolverMethod::kXpbd:
+      return "raise solver.substeps or lower solver.dt, or lower body.stiffness / region stiffness ratios";
+    case scene::SolverMethod::kExplicit:
+      return "lower solver.dt (explicit springs need dt < 2 / sqrt(k / m)), or use solver.method: xpbd";
+    case scene::SolverMethod::kImplicit:
+      return "lower solver.dt, or lower the drive amplitude";
+  }
+  return "lower solver.dt";
+}
+
+}  // namespace systole::sim

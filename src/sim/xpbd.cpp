@@ -1,0 +1,114 @@
+#include "sim/xpbd.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "sim/drive.h"
+
+namespace systole::sim {
+
+double solve_distance(double* xa, double* xb, const double* da, const double* db, double wa, double wb,
+                      double rest, double alpha_tilde, double gamma) {
+  const double w = wa + wb;
+  if (w == 0) return 0;
+  const double dx = xb[0] - xa[0], dy = xb[1] - xa[1], dz = xb[2] - xa[2];
+  const double len = std::sqrt(dx * dx + dy * dy + dz * dz);
+  if (len < 1e-12) return 0;  // Direction undefined; neighbours will separate them.
+  const double nx = dx / len, ny = dy / len, nz = dz / len;
+  const double c = len - rest;
+  // Relative motion along the constraint this substep: what the damping term resists.
+  const double rel = nx * (db[0] - da[0]) + ny * (db[1] - da[1]) + nz * (db[2] - da[2]);
+  const double dlambda = (-c - gamma * rel) / ((1.0 + gamma) * w + alpha_tilde);
+  xa[0] -= wa * dlambda * nx;
+  xa[1] -= wa * dlambda * ny;
+  xa[2] -= wa * dlambda * nz;
+  xb[0] += wb * dlambda * nx;
+  xb[1] += wb * dlambda * ny;
+  xb[2] += wb * dlambda * nz;
+  return dlambda;
+}
+
+namespace {
+
+/// Rest-length contraction of every region at time t: amplitude * phi(t).
+void update_region_contraction(const Model& model, double t_s, Eigen::VectorXd& out) {
+  for (std::size_t r = 0; r < model.regions.size(); ++r) {
+    const auto& d = model.regions[r].drive;
+    out[static_cast<Eigen::Index>(r)] = d.amplitude * activation(d, t_s, model.ramp_s);
+  }
+}
+
+void solve_springs(const Model& model, State& s, double h) {
+  const Springs& sp = model.springs;
+  const double* w = model.inverse_mass.data();
+  double* x = s.x.data();
+  const double* xp = s.x_prev.data();
+  const double inv_h2 = 1.0 / (h * h);
+  double d_a[3], d_b[3];
+  for (int j = 0; j < sp.size(); ++j) {
+    const int a = sp.a[j], b = sp.b[j];
+    const double ca = sp.region_a[j] >= 0 ? s.region_contraction[sp.region_a[j]] : 0.0;
+    const double cb = sp.region_b[j] >= 0 ? s.region_contraction[sp.region_b[j]] : 0.0;
+    const double rest = sp.rest_m[j] * (1.0 - 0.5 * (ca + cb));
+    for (int k = 0; k < 3; ++k) {
+      d_a[k] = x[3 * a + k] - xp[3 * a + k];
+      d_b[k] = x[3 * b + k] - xp[3 * b + k];
+    }
+    const double alpha_tilde = sp.compliance_m_per_N[j] * inv_h2;
+    const double gamma = sp.damping_s[j] / h;
+    s.spring_lambda[j] += solve_distance(x + 3 * a, x + 3 * b, d_a, d_b, w[a], w[b], rest, alpha_tilde, gamma);
+  }
+}
+
+/// Global volume constraint C = V(x) - V0 (Müller et al., "Position Based Dynamics", 2007,
+/// §4.4, in XPBD form): one multiplier for the whole surface.
+void solve_volume(const Model& model, State& s, double h) {
+  const VolumeConstraint& vol = model.volume;
+  if (!vol.enabled) return;
+  Eigen::Matrix3Xd& g = s.volume_gradient;
+  g.setZero();
+  double six_v = 0;
+  for (const auto& t : vol.triangles) {
+    const auto p0 = s.x.col(t[0]), p1 = s.x.col(t[1]), p2 = s.x.col(t[2]);
+    six_v += p0.dot(p1.cross(p2));
+    g.col(t[0]) += p1.cross(p2);
+    g.col(t[1]) += p2.cross(p0);
+    g.col(t[2]) += p0.cross(p1);
+  }
+  g /= 6.0;
+  const double c = six_v / 6.0 - vol.rest_m3;
+  double denom = 0;
+  for (Eigen::Index i = 0; i < s.x.cols(); ++i) denom += model.inverse_mass[i] * g.col(i).squaredNorm();
+  const double alpha_tilde = vol.compliance_m5_per_N / (h * h);
+  if (denom + alpha_tilde <= 0) return;
+  const double dlambda = (-c - alpha_tilde * s.volume_lambda) / (denom + alpha_tilde);
+  s.volume_lambda += dlambda;
+  for (Eigen::Index i = 0; i < s.x.cols(); ++i) s.x.col(i) += model.inverse_mass[i] * dlambda * g.col(i);
+}
+
+}  // namespace
+
+void xpbd_step(const Model& model, State& s, double dt_s) {
+  const int n = model.substeps;
+  const double h = dt_s / n;
+  const double drag = std::exp(-model.drag_per_s * h);
+  const Eigen::Index count = s.x.cols();
+  for (int sub = 0; sub < n; ++sub) {
+    const double t_end = s.time_s + h;
+    for (Eigen::Index i = 0; i < count; ++i) {
+      if (model.inverse_mass[i] == 0) continue;
+      s.v.col(i) = drag * (s.v.col(i) + h * model.gravity);
+    }
+    s.x_prev = s.x;
+    s.x += h * s.v;
+    update_region_contraction(model, t_end, s.region_contraction);
+    s.spring_lambda.setZero();
+    s.volume_lambda = 0;
+    solve_springs(model, s, h);
+    solve_volume(model, s, h);
+    s.v = (s.x - s.x_prev) / h;
+    s.time_s = t_end;
+  }
+}
+
+}  // namespace systole::sim
