@@ -6,7 +6,8 @@
 
 namespace systole::encode {
 
-/// "libavcodec 59.37.100", ... for each FFmpeg library linked.
+/// "libavcodec 59.37.100", ... for each FFmpeg library linked (run-time versions), then
+/// "libpng 1.6.39".
 std::vector<std::string> library_versions();
 
 /// Names of the H.264 encoders libavcodec offers (libx264 first when present).

@@ -1,0 +1,285 @@
+#include "encode/mp4_writer.h"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string_view>
+
+#include "common/atomic_output.h"
+#include "common/error.h"
+#include "encode/av_error.h"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/dict.h>
+#include <libavutil/frame.h>
+#include <libavutil/opt.h>
+#include <libavutil/rational.h>
+#include <libswscale/swscale.h>
+}
+
+namespace systole::encode {
+namespace {
+
+using detail::av_error_text;
+
+constexpr std::array<std::string_view, 10> kX264Presets = {
+    "ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow", "placebo"};
+
+[[noreturn]] void fail(ExitCode code, const std::string& what) { throw Error(code, "MP4 encoder: " + what); }
+
+void validate(const VideoSettings& s) {
+  if (s.width <= 0 || s.height <= 0) {
+    fail(ExitCode::kDataError, "video size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                                   " must be positive");
+  }
+  if (s.width % 2 != 0 || s.height % 2 != 0) {
+    const int w = s.width, h = s.height;
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    const std::string down = std::to_string(w - w % 2) + "x" + std::to_string(h - h % 2);
+    const std::string up = std::to_string(w + w % 2) + "x" + std::to_string(h + h % 2);
+    throw Error(ExitCode::kDataError,
+                "H.264 in yuv420p needs even sizes: " + size + " is odd; use " + down + " or " + up);
+  }
+  if (s.width > 16384 || s.height > 16384) {
+    fail(ExitCode::kDataError, "video size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                                   " exceeds 16384 px");
+  }
+  if (!std::isfinite(s.fps) || s.fps <= 0 || s.fps > 1000) {
+    fail(ExitCode::kDataError, "fps " + std::to_string(s.fps) + " must be in (0, 1000] frames/s");
+  }
+  if (s.crf < 0 || s.crf > 51) {
+    fail(ExitCode::kDataError, "crf " + std::to_string(s.crf) + " must be in 0..51 (lower is better quality)");
+  }
+  bool known = false;
+  std::string list;
+  for (auto p : kX264Presets) {
+    known = known || p == s.preset;
+    list += (list.empty() ? "" : ", ") + std::string(p);
+  }
+  if (!known) fail(ExitCode::kDataError, "unknown x264 preset '" + s.preset + "'; use one of " + list);
+  if (s.threads < 0 || s.threads > 64) {
+    fail(ExitCode::kDataError, "threads " + std::to_string(s.threads) + " must be in 0..64 (0 = automatic)");
+  }
+}
+
+}  // namespace
+
+FrameRate frame_rate_of(double fps) {
+  // NTSC rates are written 29.97 & co. but mean N*1000/1001 exactly.
+  for (int n : {24, 30, 48, 60, 120}) {
+    const double ntsc = n * 1000.0 / 1001.0;
+    if (std::abs(fps - ntsc) < 0.001 && std::abs(fps - n) > 0.001) return {n * 1000, 1001};
+  }
+  const AVRational q = av_d2q(fps, 100000);
+  return {q.num, q.den};
+}
+
+struct Mp4Writer::Impl {
+  VideoSettings settings;
+  AtomicOutput output;
+  AVFormatContext* format = nullptr;
+  AVCodecContext* encoder = nullptr;
+  AVStream* stream = nullptr;  // Owned by `format`.
+  AVFrame* frame = nullptr;    // Reused for every frame.
+  AVPacket* packet = nullptr;  // Reused for every packet.
+  SwsContext* sws = nullptr;
+  std::int64_t frames = 0;     // Frames sent; the next frame's pts (unit: 1/fps).
+  int first_index = 0;
+  bool finished = false;
+
+  Impl(const std::filesystem::path& target, const VideoSettings& s) : settings(s), output(target) {}
+
+  ~Impl() {
+    sws_freeContext(sws);
+    av_packet_free(&packet);
+    av_frame_free(&frame);
+    avcodec_free_context(&encoder);
+    if (format != nullptr) {
+      if (format->pb != nullptr) avio_closep(&format->pb);
+      avformat_free_context(format);
+    }
+    // `output`'s destructor then removes the temporary unless it was committed.
+  }
+
+  void open();
+  void open_encoder(const AVCodec* codec);
+  void open_converter();
+  void open_file();
+  void send(const AVFrame* f);
+};
+
+void Mp4Writer::Impl::open() {
+  detail::quiet_libav_logging();
+  const AVCodec* codec = avcodec_find_encoder_by_name("libx264");
+  if (codec == nullptr) {
+    fail(ExitCode::kInternal,
+         "this FFmpeg build has no libx264 encoder (check `systole info`; install an FFmpeg built with "
+         "--enable-libx264)");
+  }
+  const std::string path = output.temp_path().string();
+  // The format is forced: the temporary's name is not something to guess a format from.
+  int err = avformat_alloc_output_context2(&format, nullptr, "mp4", path.c_str());
+  if (err < 0 || format == nullptr) fail(ExitCode::kInternal, "cannot set up the MP4 muxer: " + av_error_text(err));
+  open_encoder(codec);
+  open_converter();
+  open_file();
+}
+
+void Mp4Writer::Impl::open_encoder(const AVCodec* codec) {
+  encoder = avcodec_alloc_context3(codec);
+  frame = av_frame_alloc();
+  packet = av_packet_alloc();
+  if (encoder == nullptr || frame == nullptr || packet == nullptr) fail(ExitCode::kInternal, "out of memory");
+
+  const FrameRate rate = frame_rate_of(settings.fps);
+  encoder->width = settings.width;
+  encoder->height = settings.height;
+  encoder->pix_fmt = AV_PIX_FMT_YUV420P;
+  encoder->framerate = AVRational{rate.num, rate.den};
+  encoder->time_base = AVRational{rate.den, rate.num};  // One tick per frame: pts = frame number.
+  encoder->sample_aspect_ratio = AVRational{1, 1};
+  encoder->profile = FF_PROFILE_H264_HIGH;
+  // Limited ("tv") range with BT.709 everywhere, matching the swscale conversion below.
+  encoder->color_range = AVCOL_RANGE_MPEG;
+  encoder->color_primaries = AVCOL_PRI_BT709;
+  encoder->color_trc = AVCOL_TRC_BT709;
+  encoder->colorspace = AVCOL_SPC_BT709;
+  encoder->thread_count = settings.threads;
+  if (format->oformat->flags & AVFMT_GLOBALHEADER) encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+
+  AVDictionary* options = nullptr;
+  av_dict_set(&options, "preset", settings.preset.c_str(), 0);
+  av_dict_set(&options, "profile", "high", 0);
+  av_dict_set_int(&options, "crf", settings.crf, 0);
+  const int err = avcodec_open2(encoder, codec, &options);
+  av_dict_free(&options);
+  if (err < 0) fail(ExitCode::kInternal, "cannot open libx264: " + av_error_text(err));
+
+  frame->format = encoder->pix_fmt;
+  frame->width = encoder->width;
+  frame->height = encoder->height;
+  frame->color_range = encoder->color_range;
+  frame->color_primaries = encoder->color_primaries;
+  frame->color_trc = encoder->color_trc;
+  frame->colorspace = encoder->colorspace;
+  if (av_frame_get_buffer(frame, 0) < 0) fail(ExitCode::kInternal, "out of memory for a frame");
+
+  stream = avformat_new_stream(format, nullptr);
+  if (stream == nullptr) fail(ExitCode::kInternal, "cannot add a video stream");
+  stream->time_base = encoder->time_base;  // A hint; the muxer may pick a finer one.
+  stream->avg_frame_rate = encoder->framerate;
+  stream->r_frame_rate = encoder->framerate;
+  if (avcodec_parameters_from_context(stream->codecpar, encoder) < 0) {
+    fail(ExitCode::kInternal, "cannot copy the encoder parameters to the stream");
+  }
+}
+
+void Mp4Writer::Impl::open_converter() {
+  // Accurate rounding and full chroma interpolation: the frames are smooth shading, where
+  // banding and chroma fringes show.
+  sws = sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGB24, settings.width, settings.height,
+                       AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr,
+                       nullptr);
+  if (sws == nullptr) fail(ExitCode::kInternal, "cannot set up the RGB to YUV conversion");
+  // RGB in full range to BT.709 limited-range YUV. For an RGB source swscale builds its
+  // RGB->YUV matrix from the destination `table`.
+  const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+  constexpr int kSrcFullRange = 1, kDstLimitedRange = 0;
+  if (sws_setColorspaceDetails(sws, bt709, kSrcFullRange, bt709, kDstLimitedRange, 0, 1 << 16, 1 << 16) < 0) {
+    fail(ExitCode::kInternal, "swscale refused the BT.709 conversion");
+  }
+}
+
+void Mp4Writer::Impl::open_file() {
+  int err = avio_open(&format->pb, output.temp_path().c_str(), AVIO_FLAG_WRITE);
+  if (err < 0) {
+    throw Error(ExitCode::kCannotCreate,
+                "cannot create '" + output.temp_path().string() + "': " + av_error_text(err));
+  }
+  AVDictionary* options = nullptr;
+  av_dict_set(&options, "movflags", "+faststart", 0);  // moov before mdat: plays while downloading.
+  err = avformat_write_header(format, &options);
+  av_dict_free(&options);
+  if (err < 0) {
+    fail(ExitCode::kIoError, "cannot write the header of '" + output.target().string() + "': " + av_error_text(err));
+  }
+}
+
+// Sends one frame (nullptr: flush) and writes every packet the encoder has ready.
+void Mp4Writer::Impl::send(const AVFrame* f) {
+  int err = avcodec_send_frame(encoder, f);
+  if (err < 0) fail(ExitCode::kInternal, "libx264 refused a frame: " + av_error_text(err));
+  for (;;) {
+    err = avcodec_receive_packet(encoder, packet);
+    if (err == AVERROR(EAGAIN) || err == AVERROR_EOF) return;
+    if (err < 0) fail(ExitCode::kInternal, "libx264 failed: " + av_error_text(err));
+    // libavcodec 59's libx264 wrapper leaves durations at 0, which makes the last frame
+    // last 0 s (a 30-frame clip at 30 fps would be 0.967 s). One frame = one tick.
+    if (packet->duration == 0) packet->duration = 1;
+    av_packet_rescale_ts(packet, encoder->time_base, stream->time_base);
+    packet->stream_index = stream->index;
+    err = av_interleaved_write_frame(format, packet);  // Takes the packet's reference.
+    av_packet_unref(packet);
+    if (err < 0) {
+      fail(ExitCode::kIoError, "cannot write to '" + output.temp_path().string() + "': " + av_error_text(err));
+    }
+  }
+}
+
+Mp4Writer::Mp4Writer(const std::filesystem::path& target, const VideoSettings& settings) {
+  validate(settings);
+  impl_ = std::make_unique<Impl>(target, settings);
+  impl_->open();
+}
+
+Mp4Writer::~Mp4Writer() = default;
+
+int Mp4Writer::frame_count() const { return static_cast<int>(impl_->frames); }
+
+void Mp4Writer::write(const Image& image, int frame_index) {
+  Impl& m = *impl_;
+  if (m.finished) fail(ExitCode::kInternal, "write() after finish()");
+  const VideoSettings& s = m.settings;
+  if (image.width != s.width || image.height != s.height ||
+      image.rgb.size() != static_cast<std::size_t>(s.width) * s.height * 3) {
+    fail(ExitCode::kInternal, "frame " + std::to_string(frame_index) + " is " + std::to_string(image.width) + "x" +
+                                  std::to_string(image.height) + ", the video is " + std::to_string(s.width) +
+                                  "x" + std::to_string(s.height));
+  }
+  if (m.frames == 0) {
+    m.first_index = frame_index;
+  } else if (frame_index != m.first_index + m.frames) {
+    fail(ExitCode::kInternal, "frame " + std::to_string(frame_index) + " arrived; expected frame " +
+                                  std::to_string(m.first_index + m.frames));
+  }
+  // The encoder may still hold a reference to the buffers; this copies only then.
+  int err = av_frame_make_writable(m.frame);
+  if (err < 0) fail(ExitCode::kInternal, "cannot get a writable frame: " + av_error_text(err));
+  const std::uint8_t* src[1] = {image.rgb.data()};
+  const int src_stride[1] = {s.width * 3};
+  sws_scale(m.sws, src, src_stride, 0, s.height, m.frame->data, m.frame->linesize);
+  m.frame->pts = m.frames;
+  m.send(m.frame);
+  ++m.frames;
+}
+
+void Mp4Writer::finish() {
+  Impl& m = *impl_;
+  if (m.finished) fail(ExitCode::kInternal, "finish() called twice");
+  if (m.frames == 0) fail(ExitCode::kInternal, "no frame was written to '" + m.output.target().string() + "'");
+  m.send(nullptr);
+  int err = av_write_trailer(m.format);  // With +faststart this also moves moov to the front.
+  if (err < 0) {
+    fail(ExitCode::kIoError, "cannot finish '" + m.output.target().string() + "': " + av_error_text(err));
+  }
+  err = avio_closep(&m.format->pb);
+  if (err < 0) {
+    fail(ExitCode::kIoError, "cannot close '" + m.output.temp_path().string() + "': " + av_error_text(err));
+  }
+  m.output.commit();
+  m.finished = true;
+}
+
+}  // namespace systole::encode
