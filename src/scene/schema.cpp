@@ -1,0 +1,712 @@
+#include "scene/schema.h"
+
+#include <Eigen/Geometry>  // cross()
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <type_traits>
+#include <utility>
+
+#include "common/error.h"
+#include "scene/units.h"
+
+namespace systole::scene {
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// Building blocks. A ValueSpec<Out> reads one YAML node into an Out and describes itself;
+// a Field<T> binds a ValueSpec to one key of struct T. Tables of Fields make the schema.
+
+struct Context {
+  std::filesystem::path base_dir;  ///< Scene folder: relative mesh files start here.
+};
+
+std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+template <class Out>
+struct ValueSpec {
+  std::string type;
+  std::string range;
+  std::vector<KeySpec> keys;
+  std::function<void(const Node&, Out&, const std::string& path, const Context&)> read;
+  std::function<std::string(const Out&)> show;  ///< A value as the docs' default column shows it.
+
+  /// Adds a rule checked after reading: `check` returns an error message, or "" when fine.
+  ValueSpec also(std::function<std::string(const Out&)> check, std::string range_text) const {
+    ValueSpec spec = *this;
+    spec.range = std::move(range_text);
+    spec.read = [inner = read, check](const Node& node, Out& out, const std::string& path, const Context& ctx) {
+      inner(node, out, path, ctx);
+      if (std::string problem = check(out); !problem.empty()) fail(node.origin, path, problem);
+    };
+    return spec;
+  }
+};
+
+template <class T>
+struct Field {
+  KeySpec spec;
+  bool is_required = false;
+  std::function<void(const Node&, T&, const std::string& path, const Context&)> read;
+
+  Field required() const {
+    Field f = *this;
+    f.is_required = true;
+    f.spec.default_text = "required";
+    return f;
+  }
+  /// For defaults that read better as words or exact fractions than as numbers.
+  Field shown_default(std::string text) const {
+    Field f = *this;
+    f.spec.default_text = std::move(text);
+    return f;
+  }
+};
+
+/// A key bound through an accessor (T& -> M&), for keys that also set a flag or a kind.
+template <class T, class M>
+Field<T> field(std::string name, ValueSpec<M> value, std::type_identity_t<std::function<M&(T&)>> access,
+               std::string doc) {
+  T defaults{};
+  KeySpec spec{std::move(name), value.type, value.show(access(defaults)), value.range, std::move(doc), value.keys};
+  return Field<T>{std::move(spec), false,
+                  [value, access](const Node& node, T& out, const std::string& path, const Context& ctx) {
+                    value.read(node, access(out), path, ctx);
+                  }};
+}
+
+/// A key bound to a member; its default is the member's default in scene.h.
+template <class T, class M>
+Field<T> field(std::string name, ValueSpec<M> value, M T::*member, std::string doc) {
+  return field<T, M>(std::move(name), std::move(value), [member](T& t) -> M& { return t.*member; }, std::move(doc));
+}
+
+// --- Numbers -----------------------------------------------------------------------------
+
+/// An interval in the dimension's display unit (deg for angles): [lo, hi], ( ) when open.
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false;
+  bool hi_open = false;
+
+  bool contains(double v) const {
+    return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+  }
+  bool bounded() const { return std::isfinite(lo) || std::isfinite(hi); }
+  std::string text(const std::string& unit) const {
+    if (!bounded()) return "";
+    std::string t = std::string(lo_open ? "(" : "[") + (std::isfinite(lo) ? format_number(lo) : "-inf") + ", " +
+                    (std::isfinite(hi) ? format_number(hi) : "inf") + (hi_open ? ")" : "]");
+    return unit.empty() ? t : t + " " + unit;
+  }
+};
+
+Range closed(double lo, double hi) { return {lo, hi, false, false}; }
+Range open_closed(double lo, double hi) { return {lo, hi, true, false}; }
+Range open(double lo, double hi) { return {lo, hi, true, true}; }
+Range any() { return {}; }
+
+std::string display_unit(Dimension d) {
+  const DimensionInfo& info = dimension_info(d);
+  return info.units.empty() ? "" : std::string(info.units[0].symbol);
+}
+
+/// Checks an SI value against a display-unit range; the message shows both.
+void check_range(const Node& node, double si, Dimension d, const Range& range, const std::string& path) {
+  const double shown = si / (dimension_info(d).units.empty() ? 1.0 : dimension_info(d).units[0].to_si);
+  if (range.contains(shown)) return;
+  const std::string as_displayed = format_quantity(si, d);
+  const std::string written = node.scalar;
+  // Say what the user wrote too when it was in another unit: "1500 bpm = 25 Hz".
+  const bool same = written == as_displayed || written == format_number(shown);
+  fail(node.origin, path, (same ? "" : written + " = ") + as_displayed + " is outside " + range.text(display_unit(d)));
+}
+
+ValueSpec<double> quantity(Dimension d, Range range) {
+  ValueSpec<double> spec;
+  spec.type = std::string(dimension_info(d).name);
+  spec.range = range.bounded() ? range.text(display_unit(d)) : "";
+  spec.read = [d, range](const Node& node, double& out, const std::string& path, const Context&) {
+    const double v = parse_quantity(node, d, path);
+    check_range(node, v, d, range, path);
+    out = v;
+  };
+  spec.show = [d](const double& v) { return format_quantity(v, d); };
+  return spec;
+}
+
+ValueSpec<double> number(Range range) { return quantity(Dimension::kNumber, range); }
+
+template <class I>
+ValueSpec<I> whole(std::int64_t lo, std::int64_t hi) {
+  ValueSpec<I> spec;
+  spec.type = "whole number";
+  spec.range = std::to_string(lo) + ".." + std::to_string(hi);
+  spec.read = [lo, hi](const Node& node, I& out, const std::string& path, const Context&) {
+    const std::int64_t v = parse_integer(node, path);
+    if (v < lo || v > hi)
+      fail(node.origin, path, std::to_string(v) + " is outside " + std::to_string(lo) + ".." + std::to_string(hi));
+    out = static_cast<I>(v);
+  };
+  spec.show = [](const I& v) { return std::to_string(v); };
+  return spec;
+}
+
+ValueSpec<bool> boolean() {
+  ValueSpec<bool> spec;
+  spec.type = "boolean";
+  spec.range = "`true` or `false`";
+  spec.read = [](const Node& node, bool& out, const std::string& path, const Context&) {
+    if (node.kind == Node::Kind::kScalar && (node.scalar == "true" || node.scalar == "True")) out = true;
+    else if (node.kind == Node::Kind::kScalar && (node.scalar == "false" || node.scalar == "False")) out = false;
+    else fail(node.origin, path, "expected true or false; got " + node.describe());
+  };
+  spec.show = [](const bool& v) { return v ? std::string("true") : std::string("false"); };
+  return spec;
+}
+
+// --- Words -------------------------------------------------------------------------------
+
+/// Names address list items in -D paths, so they are plain words and never all digits
+/// (organs.0 must stay an index).
+ValueSpec<std::string> name_text() {
+  ValueSpec<std::string> spec;
+  spec.type = "name";
+  spec.range = "letters, digits, `_`, `-`; not only digits";
+  spec.read = [](const Node& node, std::string& out, const std::string& path, const Context&) {
+    if (node.kind != Node::Kind::kScalar || node.scalar.empty())
+      fail(node.origin, path, "expected a name such as left_ventricle; got " + node.describe());
+    const std::string& s = node.scalar;
+    const bool word = std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; });
+    const bool digits = std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+    if (!word) fail(node.origin, path, "a name may use only letters, digits, '_' and '-'; got " + node.describe());
+    if (digits) fail(node.origin, path, "a name must not be only digits (it would read as a list index in -D); got " + node.describe());
+    out = s;
+  };
+  spec.show = [](const std::string& v) { return v.empty() ? std::string("—") : v; };
+  return spec;
+}
+
+ValueSpec<std::string> path_text() {
+  ValueSpec<std::string> spec;
+  spec.type = "path";
+  spec.read = [](const Node& node, std::string& out, const std::string& path, const Context&) {
+    if (node.kind != Node::Kind::kScalar || node.scalar.empty())
+      fail(node.origin, path, "expected a file path; got " + node.describe());
+    out = node.scalar;
+  };
+  spec.show = [](const std::string& v) { return v.empty() ? std::string("—") : v; };
+  return spec;
+}
+
+template <class E>
+ValueSpec<E> choice(std::vector<std::pair<std::string, E>> options) {
+  ValueSpec<E> spec;
+  spec.type = "one of";
+  std::vector<std::string> names;
+  for (const auto& [name, value] : options) {
+    spec.range += (spec.range.empty() ? "`" : ", `") + name + "`";
+    names.push_back(name);
+  }
+  spec.read = [options, names](const Node& node, E& out, const std::string& path, const Context&) {
+    if (node.kind == Node::Kind::kScalar)
+      for (const auto& [name, value] : options)
+        if (node.scalar == name) {
+          out = value;
+          return;
+        }
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    fail(node.origin, path, "expected one of " + list + "; got " + node.describe());
+  };
+  spec.show = [options](const E& v) {
+    for (const auto& [name, value] : options)
+      if (value == v) return name;
+    return std::string("—");
+  };
+  return spec;
+}
+
+// --- Vectors, colours and lists ----------------------------------------------------------
+
+ValueSpec<Eigen::Vector3d> vec3(Dimension d) {
+  ValueSpec<Eigen::Vector3d> spec;
+  const std::string name(dimension_info(d).name);
+  spec.type = d == Dimension::kNumber ? "3 numbers" : "3 " + name + "s";
+  spec.read = [d, name](const Node& node, Eigen::Vector3d& out, const std::string& path, const Context&) {
+    if (node.kind != Node::Kind::kList || node.items.size() != 3)
+      fail(node.origin, path, "expected a list of 3 " + (d == Dimension::kNumber ? std::string("numbers") : name + "s") +
+                                  ", e.g. [0, 1, 0]; got " +
+                                  (node.kind == Node::Kind::kList ? std::to_string(node.items.size()) + " items" : node.describe()));
+    for (int i = 0; i < 3; ++i) out[i] = parse_quantity(node.items[i], d, path + "[" + std::to_string(i) + "]");
+  };
+  spec.show = [d](const Eigen::Vector3d& v) {
+    const std::string unit = display_unit(d);
+    const double k = dimension_info(d).units.empty() ? 1.0 : dimension_info(d).units[0].to_si;
+    return "[" + format_number(v.x() / k) + ", " + format_number(v.y() / k) + ", " + format_number(v.z() / k) + "]" +
+           (unit.empty() ? "" : " " + unit);
+  };
+  return spec;
+}
+
+ValueSpec<Eigen::Vector3d> direction() {
+  return vec3(Dimension::kNumber).also(
+      [](const Eigen::Vector3d& v) { return v.norm() > 1e-12 ? std::string() : std::string("expected a non-zero direction; got [0, 0, 0]"); },
+      "not [0, 0, 0]");
+}
+
+ValueSpec<Color> color() {
+  ValueSpec<Color> spec;
+  spec.type = "colour";
+  spec.range = "`\"#rrggbb\"` or [r, g, b] in [0, 1]";
+  spec.read = [](const Node& node, Color& out, const std::string& path, const Context&) {
+    const std::string expected = "expected a colour: \"#rrggbb\" or [r, g, b] with channels in [0, 1]; got ";
+    if (node.kind == Node::Kind::kNull)
+      fail(node.origin, path, expected + "nothing (an unquoted # starts a YAML comment: write \"#b8322a\" in quotes)");
+    if (node.kind == Node::Kind::kScalar) {
+      const std::string& s = node.scalar;
+      const bool hex = s.size() == 7 && s[0] == '#' &&
+                       std::all_of(s.begin() + 1, s.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+      if (!hex) fail(node.origin, path, expected + node.describe());
+      for (int i = 0; i < 3; ++i) out[i] = std::stoi(s.substr(1 + 2 * i, 2), nullptr, 16) / 255.0;
+      return;
+    }
+    if (node.kind != Node::Kind::kList || node.items.size() != 3) fail(node.origin, path, expected + node.describe());
+    for (int i = 0; i < 3; ++i) {
+      const std::string item_path = path + "[" + std::to_string(i) + "]";
+      out[i] = parse_quantity(node.items[i], Dimension::kNumber, item_path);
+      check_range(node.items[i], out[i], Dimension::kNumber, closed(0, 1), item_path);
+    }
+  };
+  spec.show = [](const Color& c) {
+    return "[" + format_number(c.x()) + ", " + format_number(c.y()) + ", " + format_number(c.z()) + "]";
+  };
+  return spec;
+}
+
+template <class T>
+ValueSpec<std::vector<T>> list(ValueSpec<T> item, std::size_t min, std::size_t max, std::string type) {
+  ValueSpec<std::vector<T>> spec;
+  spec.type = std::move(type);
+  spec.range = max == std::numeric_limits<std::size_t>::max()
+                   ? (min > 0 ? "at least " + std::to_string(min) + " item" + (min > 1 ? "s" : "") : "")
+                   : std::to_string(min) + ".." + std::to_string(max) + " items";
+  spec.keys = item.keys;
+  spec.read = [item, min, max, type = spec.type](const Node& node, std::vector<T>& out, const std::string& path,
+                                                 const Context& ctx) {
+    if (node.kind != Node::Kind::kList && node.kind != Node::Kind::kNull)
+      fail(node.origin, path, "expected a " + type + " (a YAML sequence); got " + node.describe());
+    const std::size_t n = node.items.size();
+    if (n < min || n > max) {
+      const std::string expected = max == std::numeric_limits<std::size_t>::max()
+                                       ? "at least " + std::to_string(min)
+                                       : std::to_string(min) + ".." + std::to_string(max);
+      fail(node.origin, path, "expected " + expected + " items; got " + std::to_string(n));
+    }
+    out.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      T value{};
+      item.read(node.items[i], value, path + "[" + std::to_string(i) + "]", ctx);
+      out.push_back(std::move(value));
+    }
+  };
+  spec.show = [](const std::vector<T>& v) { return v.empty() ? std::string("[]") : std::string("—"); };
+  return spec;
+}
+
+template <class T>
+using Check = std::function<void(const Node&, T&, const std::string& path, const Context&)>;
+
+/// A map of known keys. Unknown keys are errors (with the closest allowed key), required
+/// keys must be present, and `check` runs last for rules across keys.
+template <class T>
+ValueSpec<T> map(std::vector<Field<T>> fields, Check<T> check = nullptr) {
+  ValueSpec<T> spec;
+  spec.type = "map";
+  for (const Field<T>& f : fields) spec.keys.push_back(f.spec);
+  spec.read = [fields, check](const Node& node, T& out, const std::string& path, const Context& ctx) {
+    std::vector<std::string> allowed;
+    for (const Field<T>& f : fields) allowed.push_back(f.spec.name);
+    auto list_allowed = [&] {
+      std::string s;
+      for (const std::string& a : allowed) s += (s.empty() ? "" : ", ") + a;
+      return s;
+    };
+    // `body:` with nothing after it is an empty map: every key keeps its default.
+    if (node.kind != Node::Kind::kMap && node.kind != Node::Kind::kNull)
+      fail(node.origin, path, "expected a map with keys " + list_allowed() + "; got " + node.describe());
+    for (const MapEntry& entry : node.entries) {
+      const auto f = std::find_if(fields.begin(), fields.end(), [&](const Field<T>& x) { return x.spec.name == entry.key; });
+      if (f == fields.end()) fail(entry.key_origin, path, unknown_key_message(entry.key, allowed));
+    }
+    for (const Field<T>& f : fields) {
+      if (const Node* value = node.find(f.spec.name)) f.read(*value, out, join(path, f.spec.name), ctx);
+      else if (f.is_required) fail(node.origin, path, "missing required key '" + f.spec.name + "' (" + f.spec.doc + ")");
+    }
+    if (check) check(node, out, path, ctx);
+  };
+  spec.show = [](const T&) { return std::string(); };
+  return spec;
+}
+
+/// Where a key of a map was written, for cross-key messages (the map itself if absent).
+const Origin& origin_of(const Node& map, const std::string& key) {
+  const Node* value = map.find(key);
+  return value ? value->origin : map.origin;
+}
+
+// ---------------------------------------------------------------------------------------
+// The schema. Ranges are in the display unit of each dimension (deg for angles).
+
+ValueSpec<Selector> selector_map() {
+  auto sphere = map<Selector>({
+      field("center", vec3(Dimension::kLength), &Selector::center, "Centre, in organ space (after units and centring)."),
+      field("radius", quantity(Dimension::kLength, open_closed(0, 1000)), &Selector::radius_m, "Radius.").required(),
+  });
+  auto box = map<Selector>({
+      field("min", vec3(Dimension::kLength), &Selector::min, "Lowest corner, in organ space.").required(),
+      field("max", vec3(Dimension::kLength), &Selector::max, "Highest corner, in organ space.").required(),
+  }, [](const Node& node, Selector& s, const std::string& path, const Context&) {
+    if ((s.min.array() > s.max.array()).any())
+      fail(origin_of(node, "max"), join(path, "max"), "every coordinate of max must be >= that of min");
+  });
+  auto half_space = map<Selector>({
+      field("point", vec3(Dimension::kLength), &Selector::point, "A point on the boundary plane."),
+      field("normal", direction(), &Selector::normal, "Points into the selected side (normalised on reading).").required(),
+  }, [](const Node&, Selector& s, const std::string&, const Context&) { s.normal.normalize(); });
+
+  return map<Selector>({
+      field<Selector, std::string>("part", name_text(), [](Selector& s) -> std::string& { s.kind = SelectorKind::kPart; return s.part; },
+            "A named part: a procedural organ's anatomical part or a mesh file's sub-mesh.").shown_default("—"),
+      field<Selector, Selector>("sphere", sphere, [](Selector& s) -> Selector& { s.kind = SelectorKind::kSphere; return s; },
+            "Vertices within `radius` of `center`."),
+      field<Selector, Selector>("box", box, [](Selector& s) -> Selector& { s.kind = SelectorKind::kBox; return s; },
+            "Vertices inside the axis-aligned box."),
+      field<Selector, Selector>("half_space", half_space, [](Selector& s) -> Selector& { s.kind = SelectorKind::kHalfSpace; return s; },
+            "Vertices on the `normal` side of the plane through `point`."),
+  }, [](const Node& node, Selector& s, const std::string& path, const Context&) {
+    if (node.entries.size() != 1)
+      fail(node.origin, path, "a selector has exactly one of part, sphere, box, half_space; got " +
+                                  std::to_string(node.entries.size()) + " keys");
+    s.origin = node.origin;
+  });
+}
+
+/// `select`: "all", one selector map, or a list of them (their union).
+ValueSpec<std::vector<Selector>> selection() {
+  const ValueSpec<Selector> one = selector_map();
+  ValueSpec<std::vector<Selector>> spec;
+  spec.type = "selector or list";
+  spec.range = "`all`, a selector map, or a list of them";
+  spec.keys = one.keys;
+  auto read_one = [one](const Node& node, const std::string& path, const Context& ctx) {
+    Selector s;
+    if (node.kind == Node::Kind::kScalar && node.scalar == "all") {
+      s.origin = node.origin;
+      return s;
+    }
+    if (node.kind != Node::Kind::kMap)
+      fail(node.origin, path, "expected \"all\" or a selector map (part, sphere, box or half_space); got " + node.describe());
+    one.read(node, s, path, ctx);
+    return s;
+  };
+  spec.read = [read_one](const Node& node, std::vector<Selector>& out, const std::string& path, const Context& ctx) {
+    out.clear();
+    if (node.kind == Node::Kind::kList) {
+      if (node.items.empty()) fail(node.origin, path, "expected at least one selector; got an empty list");
+      for (std::size_t i = 0; i < node.items.size(); ++i)
+        out.push_back(read_one(node.items[i], path + "[" + std::to_string(i) + "]", ctx));
+    } else {
+      out.push_back(read_one(node, path, ctx));
+    }
+  };
+  spec.show = [](const std::vector<Selector>&) { return std::string("the part named like the region"); };
+  return spec;
+}
+
+ValueSpec<Drive> drive_spec() {
+  auto harmonic = map<Harmonic>({
+      field("amplitude", number(closed(0, 0.5)), &Harmonic::amplitude, "Weight of this harmonic in phi."),
+      field("phase", quantity(Dimension::kAngle, any()), &Harmonic::phase_rad, "Phase of this harmonic."),
+  });
+  auto rate = quantity(Dimension::kFrequency, closed(0, 20));
+  return map<Drive>({
+      field("waveform", choice<Waveform>({{"none", Waveform::kNone}, {"sine", Waveform::kSine}, {"fourier", Waveform::kFourier},
+                                          {"cardiac", Waveform::kCardiac}, {"breathing", Waveform::kBreathing}, {"samples", Waveform::kSamples}}),
+            &Drive::waveform, "Shape of phi(t) over one period; `none` leaves the region passive."),
+      field("rate", rate, &Drive::rate_hz, "Cycles per unit time at the start of the clip (72 bpm = 1.2 Hz)."),
+      field("rate_end", rate, &Drive::rate_end_hz, "When > 0, the rate ramps linearly to this by the clip's end."),
+      field("amplitude", number(closed(0, 0.95)), &Drive::amplitude, "Fraction of rest length removed at phi = 1."),
+      field("phase", quantity(Dimension::kAngle, any()), &Drive::phase_rad, "Phase offset of the cycle."),
+      field("delay", quantity(Dimension::kTime, closed(0, 60)), &Drive::delay_s, "Activation delay (atria before ventricles)."),
+      field("systolic_fraction", number(open(0.05, 0.95)), &Drive::systolic_fraction, "`cardiac`: part of the period spent contracting."),
+      field("inhale_fraction", number(open(0.05, 0.95)), &Drive::inhale_fraction, "`breathing`: part of the period spent inhaling."),
+      field("harmonics", list(harmonic, 0, 32, "list of harmonics"), &Drive::harmonics,
+            "`fourier`: harmonic k = 1, 2, ... as {amplitude, phase}; amplitudes sum to at most 0.5."),
+      field("samples", list(number(closed(0, 1)), 2, 1024, "list of numbers"), &Drive::samples,
+            "`samples`: phi over one period, evenly spaced, interpolated periodically."),
+      field("irregularity", number(closed(0, 0.5)), &Drive::irregularity, "Seeded beat-to-beat jitter of the period (0 = regular)."),
+  }, [](const Node& node, Drive& d, const std::string& path, const Context&) {
+    if (d.waveform == Waveform::kNone) return;
+    if (d.rate_hz <= 0)
+      fail(origin_of(node, "rate"), join(path, "rate"), "a driven region (waveform other than none) needs a rate > 0, e.g. \"72 bpm\"");
+    if (d.waveform == Waveform::kFourier && d.harmonics.empty())
+      fail(origin_of(node, "harmonics"), join(path, "harmonics"), "waveform fourier needs at least one harmonic");
+    if (d.waveform == Waveform::kSamples && d.samples.empty())
+      fail(origin_of(node, "samples"), join(path, "samples"), "waveform samples needs a list of 2..1024 samples");
+    // phi = 1/2 + sum a_k cos(...) stays in [0, 1] only if the amplitudes sum to <= 1/2.
+    double sum = 0;
+    for (const Harmonic& h : d.harmonics) sum += h.amplitude;
+    if (sum > 0.5 + 1e-12)
+      fail(origin_of(node, "harmonics"), join(path, "harmonics"),
+           "harmonic amplitudes sum to " + format_number(sum) + "; at most 0.5 keeps phi within [0, 1]");
+  });
+}
+
+ValueSpec<Region> region_spec() {
+  return map<Region>({
+      field("name", name_text(), &Region::name, "Unique within the organ; also the default part to select.").required(),
+      field("select", selection(), &Region::select, "Which vertices belong to the region; later regions take vertices from earlier ones."),
+      field("drive", drive_spec(), &Region::drive, "The region's rhythm: L(t) = L0 (1 - amplitude phi(t - delay))."),
+      field("stiffness", number(open_closed(0, 1e6)), &Region::stiffness_scale, "Multiplies the body's stiffness."),
+      field("damping", number(closed(0, 1e6)), &Region::damping_scale, "Multiplies the body's damping."),
+      field("pinned", boolean(), &Region::pinned, "Fixed in place (valves, vessel stumps)."),
+      field<Region, Color>("color", color(), [](Region& r) -> Color& { r.has_color = true; return r.color; },
+            "Colour of the region; else the organ's material colour.").shown_default("material color"),
+  }, [](const Node& node, Region& r, const std::string&, const Context&) { r.origin = node.origin; });
+}
+
+ValueSpec<MeshSource> mesh_spec() {
+  return map<MeshSource>({
+      field("file", path_text(), &MeshSource::file, "Mesh file (OBJ, STL, PLY, glTF, ...), relative to the scene's folder."),
+      field("procedural", name_text(), &MeshSource::procedural, "A generated organ, e.g. `heart`."),
+      field("detail", whole<int>(1, 6), &MeshSource::detail, "`procedural` only: level of detail, 1 (coarse) to 6 (fine)."),
+      field("units", choice<double>({{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}}), &MeshSource::unit_m, "`file` only: the file's length unit."),
+      field("center", boolean(), &MeshSource::center, "Move the mesh's bounding-box centre to the origin."),
+  }, [](const Node& node, MeshSource& m, const std::string& path, const Context& ctx) {
+    m.origin = node.origin;
+    const bool has_file = node.find("file") != nullptr, has_procedural = node.find("procedural") != nullptr;
+    if (has_file == has_procedural)
+      fail(node.origin, path, std::string("expected exactly one of file, procedural; got ") + (has_file ? "both" : "neither"));
+    if (has_file && node.find("detail")) fail(origin_of(node, "detail"), join(path, "detail"), "applies only to a procedural mesh");
+    if (has_procedural && node.find("units")) fail(origin_of(node, "units"), join(path, "units"), "applies only to a mesh file");
+    if (has_file) {
+      const std::filesystem::path file = std::filesystem::path(m.file).is_absolute() ? std::filesystem::path(m.file) : ctx.base_dir / m.file;
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(file, ec))
+        throw Error(ExitCode::kNoInput, where(origin_of(node, "file")) + join(path, "file") + ": mesh file not found: " + file.lexically_normal().string());
+      m.file = file.lexically_normal().string();
+    }
+  });
+}
+
+ValueSpec<Organ> organ_spec() {
+  return map<Organ>({
+      field("name", name_text(), &Organ::name, "Unique name; -D paths may use it (organs.heart.body.mass).").required(),
+      field("mesh", mesh_spec(), &Organ::mesh, "Where the surface comes from: exactly one of `file` or `procedural`.").required(),
+      field("transform", map<Transform>({
+                field("translate", vec3(Dimension::kLength), &Transform::translate_m, "Position of the organ."),
+                field("rotate", vec3(Dimension::kAngle), &Transform::rotate_rad, "Euler angles, applied X, then Y, then Z."),
+                field("scale", number(open_closed(0, 1000)), &Transform::scale, "Uniform scale, applied before rotation."),
+            }), &Organ::transform, "Placement in the world, applied after units and centring."),
+      field("material", map<Material>({
+                field("color", color(), &Material::color, "Surface colour (sRGB)."),
+                field("specular", number(closed(0, 1)), &Material::specular, "Strength of the highlight."),
+                field("shininess", number(closed(1, 1000)), &Material::shininess, "Blinn-Phong exponent: larger is a tighter highlight."),
+            }), &Organ::material, "How the surface looks."),
+      field("body", map<Body>({
+                field("mass", quantity(Dimension::kMass, open_closed(0, 1000)), &Body::mass_kg, "Total mass, spread over vertices by area."),
+                field("stiffness", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Body::stiffness_N_per_m, "Spring stiffness of each surface edge."),
+                field("damping", quantity(Dimension::kTime, closed(0, 1)), &Body::damping_s, "Stiffness-proportional damping time (c = k damping)."),
+                field("volume_stiffness", quantity(Dimension::kPressure, closed(0, 1e9)), &Body::volume_stiffness_Pa, "Bulk modulus of the enclosed volume; 0 = no volume constraint."),
+                field("drag", quantity(Dimension::kRate, closed(0, 1000)), &Body::drag_per_s, "Velocity damping towards rest (the surrounding tissue)."),
+            }), &Organ::body, "The soft body's physical parameters."),
+      field("regions", list(region_spec(), 0, 256, "list of regions"), &Organ::regions, "Parts with their own rhythm and stiffness, applied in order."),
+  }, [](const Node& node, Organ& o, const std::string& path, const Context&) {
+    o.origin = node.origin;
+    for (std::size_t i = 0; i < o.regions.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (o.regions[i].name == o.regions[j].name)
+          fail(origin_of(node.find("regions")->items[i], "name"), path + ".regions[" + std::to_string(i) + "].name",
+               "duplicate region name '" + o.regions[i].name + "' (also regions[" + std::to_string(j) + "])");
+  });
+}
+
+ValueSpec<Solver> solver_spec() {
+  // dt is a time or the word "auto", and sets two members: a custom field.
+  const Range dt_range = open_closed(0, 0.1);
+  Field<Solver> dt{KeySpec{"dt", "time or `auto`", "1/240 s", dt_range.text("s") + ", or `auto`",
+                           "Step size; `auto` lets the solver choose from the drive and stiffness.", {}},
+                   false, [dt_range](const Node& node, Solver& s, const std::string& path, const Context&) {
+                     if (node.kind == Node::Kind::kScalar && node.scalar == "auto") {
+                       s.auto_dt = true;
+                       return;
+                     }
+                     const double v = parse_quantity(node, Dimension::kTime, path);
+                     check_range(node, v, Dimension::kTime, dt_range, path);
+                     s.auto_dt = false;
+                     s.dt_s = v;
+                   }};
+  return map<Solver>({
+      field("method", choice<SolverMethod>({{"xpbd", SolverMethod::kXpbd}, {"explicit", SolverMethod::kExplicit}, {"implicit", SolverMethod::kImplicit}}),
+            &Solver::method, "XPBD with substeps, explicit mass-spring (symplectic Euler), or implicit Euler."),
+      dt,
+      field("substeps", whole<int>(1, 200), &Solver::substeps, "XPBD substeps per step."),
+  }, [](const Node& node, Solver& s, const std::string&, const Context&) { s.origin = node.origin; });
+}
+
+ValueSpec<Camera> camera_spec() {
+  return map<Camera>({
+      field("position", vec3(Dimension::kLength), &Camera::position_m, "Eye position."),
+      field("target", vec3(Dimension::kLength), &Camera::target_m, "Point looked at."),
+      field("up", direction(), &Camera::up, "Up direction (not parallel to the view)."),
+      field("fov", quantity(Dimension::kAngle, open(1, 170)), &Camera::fov_rad, "Vertical field of view."),
+  }, [](const Node& node, Camera& c, const std::string& path, const Context&) {
+    const Eigen::Vector3d view = c.target_m - c.position_m;
+    if (view.norm() < 1e-9) fail(origin_of(node, "target"), join(path, "target"), "must differ from position");
+    if (view.normalized().cross(c.up.normalized()).norm() < 1e-6)
+      fail(origin_of(node, "up"), join(path, "up"), "must not be parallel to the view direction (target - position)");
+  });
+}
+
+ValueSpec<Output> output_spec() {
+  auto even_size = whole<int>(16, 7680).also(
+      [](const int& v) {
+        return v % 2 == 0 ? std::string()
+                          : std::to_string(v) + " is odd; H.264 with yuv420p needs even sizes; use " + std::to_string(v - 1) +
+                                " or " + std::to_string(v + 1);
+      },
+      "16..7680, even");
+  return map<Output>({
+      field("file", path_text(), &Output::file, "Video path (relative to the working directory).").shown_default("out/<scene name>.mp4"),
+      field("width", even_size, &Output::width, "Frame width in pixels."),
+      field("height", even_size, &Output::height, "Frame height in pixels."),
+      field("fps", number(open_closed(0, 240)), &Output::fps, "Frames per second of video."),
+      field("duration", quantity(Dimension::kTime, open_closed(0, 3600)), &Output::duration_s, "Length of the clip."),
+      field("crf", whole<int>(0, 51), &Output::crf, "x264 constant rate factor: 0 lossless, 51 worst."),
+      field("preset", choice<std::string>({{"ultrafast", "ultrafast"}, {"superfast", "superfast"}, {"veryfast", "veryfast"},
+                                           {"faster", "faster"}, {"fast", "fast"}, {"medium", "medium"}, {"slow", "slow"},
+                                           {"slower", "slower"}, {"veryslow", "veryslow"}, {"placebo", "placebo"}}),
+            &Output::preset, "x264 speed/size preset."),
+      field("antialias", whole<int>(0, 4).also([](const int& v) { return v == 0 || v == 2 || v == 4 ? std::string() : std::to_string(v) + " is not one of 0, 2, 4"; },
+                                               "0, 2 or 4"),
+            &Output::antialias, "MSAA samples per pixel (0 = off)."),
+      field("background", color(), &Output::background, "Background colour (sRGB)."),
+  });
+}
+
+/// A warm key light from the upper left and a cool, dimmer fill from the right, so the
+/// organ reads as a solid even when a scene names no lights.
+std::vector<Light> default_lights() {
+  Light key;
+  key.direction = Eigen::Vector3d(-0.4, -0.6, -1.0);
+  key.color = Color(1.0, 0.96, 0.9);
+  key.intensity = 1.0;
+  Light fill;
+  fill.direction = Eigen::Vector3d(0.7, 0.2, -0.7);
+  fill.color = Color(0.8, 0.87, 1.0);
+  fill.intensity = 0.35;
+  return {key, fill};
+}
+
+ValueSpec<Scene> scene_spec() {
+  auto light = map<Light>({
+      field("direction", direction(), &Light::direction, "Direction the light travels."),
+      field("color", color(), &Light::color, "Light colour (sRGB)."),
+      field("intensity", number(closed(0, 100)), &Light::intensity, "Brightness multiplier."),
+  });
+  return map<Scene>({
+      field("seed", whole<std::uint64_t>(0, std::numeric_limits<std::int64_t>::max()), &Scene::seed, "Seeds every random choice (irregular rhythms, tuning)."),
+      field("gravity", vec3(Dimension::kAcceleration), &Scene::gravity, "Gravity acceleration."),
+      field("organs", list(organ_spec(), 1, 64, "list of organs"), &Scene::organs, "The soft bodies in the scene.").required(),
+      field("solver", solver_spec(), &Scene::solver, "Time integration."),
+      field("camera", camera_spec(), &Scene::camera, "The view."),
+      field("lights", list(light, 1, 8, "list of lights"), &Scene::lights, "Directional lights.").shown_default("a warm key and a cool fill"),
+      field("output", output_spec(), &Scene::output, "The video file."),
+  }, [](const Node& node, Scene& s, const std::string&, const Context&) {
+    if (!node.find("lights")) s.lights = default_lights();
+    for (std::size_t i = 0; i < s.organs.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (s.organs[i].name == s.organs[j].name)
+          fail(origin_of(node.find("organs")->items[i], "name"), "organs[" + std::to_string(i) + "].name",
+               "duplicate organ name '" + s.organs[i].name + "' (also organs[" + std::to_string(j) + "])");
+  });
+}
+
+const ValueSpec<Scene>& the_scene_spec() {
+  static const ValueSpec<Scene> spec = scene_spec();
+  return spec;
+}
+
+void collect_paths(const KeySpec& spec, const std::string& prefix, std::vector<std::string>& out) {
+  for (const KeySpec& key : spec.keys) {
+    const std::string path = join(prefix, key.name);
+    out.push_back(path);
+    const bool is_list = key.type.starts_with("list") || key.type.starts_with("selector");
+    collect_paths(key, is_list ? path + "[]" : path, out);
+  }
+}
+
+// Table cells must not break the Markdown table.
+std::string cell(std::string text) {
+  for (std::size_t at = 0; (at = text.find('|', at)) != std::string::npos; at += 2) text.replace(at, 1, "\\|");
+  return text;
+}
+
+void write_tables(const KeySpec& spec, const std::string& prefix, const std::string& title, std::string& out) {
+  out += "### " + title + "\n\n| Key | Type | Default | Range | Description |\n|---|---|---|---|---|\n";
+  for (const KeySpec& key : spec.keys)
+    out += "| `" + join(prefix, key.name) + "` | " + cell(key.type) + " | " + cell(key.default_text) + " | " +
+           cell(key.range) + " | " + cell(key.doc) + " |\n";
+  out += "\n";
+  for (const KeySpec& key : spec.keys) {
+    if (key.keys.empty()) continue;
+    const bool is_list = key.type.starts_with("list") || key.type.starts_with("selector");
+    const std::string path = join(prefix, key.name) + (is_list ? "[]" : "");
+    write_tables(key, path, "`" + path + "`", out);
+  }
+}
+
+}  // namespace
+
+const KeySpec* KeySpec::find(const std::string& key) const {
+  for (const KeySpec& k : keys)
+    if (k.name == key) return &k;
+  return nullptr;
+}
+
+std::vector<std::string> KeySpec::key_names() const {
+  std::vector<std::string> names;
+  for (const KeySpec& k : keys) names.push_back(k.name);
+  return names;
+}
+
+const KeySpec& scene_schema() {
+  static const KeySpec root{"", "map", "", "", "A scene.", the_scene_spec().keys};
+  return root;
+}
+
+Scene read_scene(const Node& root, const std::filesystem::path& base_dir) {
+  Scene scene;
+  the_scene_spec().read(root, scene, "", Context{base_dir});
+  return scene;
+}
+
+std::vector<std::string> key_paths() {
+  std::vector<std::string> paths;
+  collect_paths(scene_schema(), "", paths);
+  return paths;
+}
+
+std::string reference_markdown() {
+  std::string out;
+  write_tables(scene_schema(), "", "Top level", out);
+  return out;
+}
+
+}  // namespace systole::scene

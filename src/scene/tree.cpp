@@ -1,0 +1,127 @@
+#include "scene/tree.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <string>
+
+#include "common/error.h"
+
+namespace systole::scene {
+namespace {
+
+Origin origin_of(const YAML::Mark& mark, const std::string& file, const Origin& fallback) {
+  // yaml-cpp gives a null mark (-1) to some implicit nulls, e.g. `mass:` with no value.
+  if (mark.line < 0) return fallback;
+  return Origin{file, mark.line + 1, mark.column + 1};
+}
+
+Node convert(const YAML::Node& in, const std::string& file, const Origin& fallback) {
+  Node out;
+  out.origin = origin_of(in.Mark(), file, fallback);
+  switch (in.Type()) {
+    case YAML::NodeType::Undefined:
+    case YAML::NodeType::Null:
+      out.kind = Node::Kind::kNull;
+      break;
+    case YAML::NodeType::Scalar:
+      out.kind = Node::Kind::kScalar;
+      out.scalar = in.Scalar();
+      break;
+    case YAML::NodeType::Sequence:
+      out.kind = Node::Kind::kList;
+      for (const YAML::Node& item : in) out.items.push_back(convert(item, file, out.origin));
+      break;
+    case YAML::NodeType::Map:
+      out.kind = Node::Kind::kMap;
+      for (const auto& kv : in) {
+        const Origin key_origin = origin_of(kv.first.Mark(), file, out.origin);
+        if (!kv.first.IsScalar()) fail(key_origin, "", "a key must be a plain name, not " + convert(kv.first, file, key_origin).describe());
+        const std::string key = kv.first.Scalar();
+        // yaml-cpp keeps both copies of a repeated key; the second would silently win.
+        const auto first = std::find_if(out.entries.begin(), out.entries.end(),
+                                        [&](const MapEntry& e) { return e.key == key; });
+        if (first != out.entries.end())
+          fail(key_origin, "", "duplicate key '" + key + "' (first written at line " +
+                                   std::to_string(first->key_origin.line) + ")");
+        out.entries.push_back(MapEntry{key, key_origin, convert(kv.second, file, key_origin)});
+      }
+      break;
+  }
+  return out;
+}
+
+// Levenshtein distance, for "did you mean".
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+const Node* Node::find(std::string_view key) const {
+  for (const MapEntry& e : entries)
+    if (e.key == key) return &e.value;
+  return nullptr;
+}
+
+Node* Node::find(std::string_view key) {
+  return const_cast<Node*>(static_cast<const Node*>(this)->find(key));
+}
+
+std::string Node::describe() const {
+  switch (kind) {
+    case Kind::kNull: return "nothing";
+    case Kind::kList: return "a list";
+    case Kind::kMap: return "a map";
+    case Kind::kScalar: break;
+  }
+  return "\"" + scalar + "\"";
+}
+
+Node parse_yaml(std::string_view text, const std::string& origin_file) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(std::string(text));
+  } catch (const YAML::ParserException& e) {
+    fail(Origin{origin_file, e.mark.line + 1, e.mark.column + 1}, "", "invalid YAML: " + e.msg);
+  }
+  return convert(root, origin_file, Origin{origin_file, 1, 1});
+}
+
+std::string where(const Origin& origin) {
+  if (origin.line <= 0) return origin.file + ": ";
+  return origin.file + ":" + std::to_string(origin.line) + ":" + std::to_string(origin.column) + ": ";
+}
+
+void fail(const Origin& origin, const std::string& path, const std::string& message) {
+  throw Error(ExitCode::kDataError, where(origin) + (path.empty() ? "" : path + ": ") + message);
+}
+
+std::string unknown_key_message(std::string_view key, const std::vector<std::string>& allowed) {
+  std::string best;
+  std::size_t best_distance = 0;
+  for (const std::string& candidate : allowed) {
+    const std::size_t d = edit_distance(key, candidate);
+    if (best.empty() || d < best_distance) best = candidate, best_distance = d;
+  }
+  std::string message = "unknown key '" + std::string(key) + "'";
+  // Up to a third of the name wrong still reads as a typo; more is a different word.
+  if (!best.empty() && best_distance <= std::max<std::size_t>(2, key.size() / 3))
+    message += " (did you mean '" + best + "'?)";
+  message += "; allowed keys: ";
+  for (std::size_t i = 0; i < allowed.size(); ++i) message += (i ? ", " : "") + allowed[i];
+  return message;
+}
+
+}  // namespace systole::scene

@@ -1,0 +1,51 @@
+#pragma once
+// The YAML document as a small tree of our own, each node remembering where it was
+// written. yaml-cpp's nodes cannot carry a "came from -D" origin, and -D overrides must
+// splice values into the tree before validation, so we convert once and work on this.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace systole::scene {
+
+struct MapEntry;
+
+struct Node {
+  enum class Kind { kNull, kScalar, kList, kMap };
+
+  Kind kind = Kind::kNull;
+  std::string scalar;             ///< kScalar: the text as written (quotes removed).
+  std::vector<Node> items;        ///< kList
+  std::vector<MapEntry> entries;  ///< kMap, in document order.
+  Origin origin;
+
+  /// kMap: the value of `key`, or nullptr.
+  const Node* find(std::string_view key) const;
+  Node* find(std::string_view key);
+  /// "a map", "a list", "nothing" or the quoted scalar: for "got ..." in messages.
+  std::string describe() const;
+};
+
+struct MapEntry {
+  std::string key;
+  Origin key_origin;
+  Node value;
+};
+
+/// Parses YAML text; `origin_file` labels every node. A syntax error, or a duplicate key,
+/// throws Error(kDataError) with file:line:column.
+Node parse_yaml(std::string_view text, const std::string& origin_file);
+
+/// "file:line:column: " (or "file: " when the line is unknown).
+std::string where(const Origin& origin);
+
+/// Throws Error(kDataError): "file:line:column: path: message" (path omitted when empty).
+[[noreturn]] void fail(const Origin& origin, const std::string& path, const std::string& message);
+
+/// "unknown key 'x' (did you mean 'y'?); allowed keys: a, b, c".
+std::string unknown_key_message(std::string_view key, const std::vector<std::string>& allowed);
+
+}  // namespace systole::scene
