@@ -168,9 +168,10 @@ void Mp4Writer::Impl::open_encoder(const AVCodec* codec) {
 
   stream = avformat_new_stream(format, nullptr);
   if (stream == nullptr) fail(ExitCode::kInternal, "cannot add a video stream");
-  stream->time_base = encoder->time_base;  // A hint; the muxer may pick a finer one.
-  stream->avg_frame_rate = encoder->framerate;
-  stream->r_frame_rate = encoder->framerate;
+  // A hint; the muxer may pick a finer one. The stream's frame rate stays unset: MP4 keeps
+  // none (players derive it from sample durations), and with it set libavformat would
+  // quietly patch zero packet durations, hiding a regression of send()'s fix from the tests.
+  stream->time_base = encoder->time_base;
   if (avcodec_parameters_from_context(stream->codecpar, encoder) < 0) {
     fail(ExitCode::kInternal, "cannot copy the encoder parameters to the stream");
   }

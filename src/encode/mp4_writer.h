@@ -16,7 +16,9 @@ struct VideoSettings {
   int height = 720;                 ///< unit: px; must be even.
   double fps = 30;                  ///< unit: frames/s; see frame_rate_of() for the exact rate.
   int crf = 20;                     ///< x264 constant rate factor, 0-51.
-  std::string preset = "veryfast";  ///< x264 preset.
+  std::string preset = "veryfast";  ///< x264 preset. "ultrafast" drops CABAC and the 8x8
+                                    ///< transform, so the stream is Constrained Baseline (a
+                                    ///< subset every High decoder plays); the others give High.
   int threads = 0;                  ///< Encoder threads; 0 lets x264 choose.
 };
 

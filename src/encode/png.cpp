@@ -21,6 +21,7 @@ namespace {
 // So no destructor is skipped and no C++ exception crosses libpng's C frames.
 struct PngStatus {
   char message[256] = {};
+  char warning[256] = {};  // The last warning: libpng often explains an error there first.
 };
 
 void on_png_error(png_structp png, png_const_charp message) {
@@ -29,7 +30,17 @@ void on_png_error(png_structp png, png_const_charp message) {
   png_longjmp(png, 1);
 }
 
-void on_png_warning(png_structp, png_const_charp) {}  // Warnings (e.g. odd chunks) are not errors.
+// Warnings (e.g. odd chunks) are not errors; the last one is kept to explain an error.
+void on_png_warning(png_structp png, png_const_charp message) {
+  auto* status = static_cast<PngStatus*>(png_get_error_ptr(png));
+  std::snprintf(status->warning, sizeof status->warning, "%s", message != nullptr ? message : "");
+}
+
+std::string describe(const PngStatus& status) {
+  std::string text = status.message[0] != '\0' ? status.message : "out of memory";
+  if (status.warning[0] != '\0') text += std::string("; ") + status.warning;
+  return text;
+}
 
 // Largest side we read (unit: px): a corrupt header must not make us allocate gigabytes.
 constexpr png_uint_32 kMaxSide = 16384;
@@ -137,7 +148,7 @@ void write_png(const std::filesystem::path& path, const Image& image) {
                                                "': " + std::strerror(errno));
     }
     if (!write_rgb(w, image, rows)) {
-      throw Error(ExitCode::kIoError, "cannot write '" + path.string() + "': " + w.status.message);
+      throw Error(ExitCode::kIoError, "cannot write '" + path.string() + "': " + describe(w.status));
     }
     FILE* file = w.file;
     w.file = nullptr;
@@ -168,8 +179,7 @@ Image read_png(const std::filesystem::path& path) {
   Image image;
   std::vector<png_bytep> rows;
   if (!read_rgb(r, image, rows)) {
-    throw Error(ExitCode::kDataError, "cannot read '" + path.string() + "': corrupt PNG (" +
-                                          (r.status.message[0] != '\0' ? r.status.message : "out of memory") + ")");
+    throw Error(ExitCode::kDataError, "cannot read '" + path.string() + "': corrupt PNG (" + describe(r.status) + ")");
   }
   return image;
 }

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 #include <png.h>
+#include <zlib.h>
 
+#include <chrono>
 #include <cstdio>
 #include <algorithm>
 #include <functional>
@@ -152,8 +154,12 @@ TEST(Png, HugeDeclaredSizeIsRefused) {
   const fs::path dir = scratch_dir();
   write_png(dir / "good.png", pattern(4, 4));
   std::string bytes = test::read_bytes(dir / "good.png");
-  // IHDR width at offset 16: claim 1,000,000 px (the CRC no longer matches either).
+  // IHDR width at offset 16: claim 1,000,000 px, with a correct CRC so only the limit
+  // (not a checksum) can refuse it before a 12 GB allocation.
   bytes[16] = 0x00, bytes[17] = 0x0F, bytes[18] = 0x42, bytes[19] = 0x40;
+  const auto crc = static_cast<std::uint32_t>(
+      crc32(0, reinterpret_cast<const Bytef*>(bytes.data() + 12), 17));  // "IHDR" + 13 data bytes.
+  for (int i = 0; i < 4; ++i) bytes[29 + i] = static_cast<char>(crc >> (24 - 8 * i));
   test::write_bytes(dir / "huge.png", bytes);
   EXPECT_EQ(code_of([&] { read_png(dir / "huge.png"); }), ExitCode::kDataError);
 }
@@ -199,6 +205,28 @@ TEST(Png, SequenceWriterCreatesTheFolderAndNumbersFrames) {
   test::write_bytes(root / "file", "x");
   EXPECT_EQ(code_of([&] { PngSequenceWriter w(root / "file", 3); }), ExitCode::kCannotCreate);
   EXPECT_EQ(code_of([&] { PngSequenceWriter w(root / "file" / "sub", 3); }), ExitCode::kCannotCreate);
+}
+
+// Not a test: prints ms per 720p PNG. Run with --gtest_also_run_disabled_tests.
+TEST(PngSpeed, DISABLED_Write720p) {
+  const fs::path dir = scratch_dir();
+  Image image(1280, 720);
+  for (int y = 0; y < 720; ++y) {
+    for (int x = 0; x < 1280; ++x) {
+      std::uint8_t* p = image.row(y) + 3 * x;
+      p[0] = static_cast<std::uint8_t>(x / 6), p[1] = static_cast<std::uint8_t>(y / 4), p[2] = 60;
+    }
+  }
+  PngSequenceWriter writer(dir, 20);
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < 20; ++i) writer.write(image, i);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  std::printf("720p PNG: %.1f ms/frame, %.0f kB\n", ms / 20, fs::file_size(dir / frame_file_name(0, 20)) / 1e3);
+  const auto read_start = std::chrono::steady_clock::now();
+  for (int i = 0; i < 20; ++i) read_png(dir / frame_file_name(i, 20));
+  const double read_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - read_start).count();
+  std::printf("720p PNG read: %.1f ms/frame\n", read_ms / 20);
 }
 
 }  // namespace
