@@ -2,15 +2,16 @@
 // Wet living tissue for teaching videos, shaded in linear light:
 //  - wrap-around diffuse: light bleeds past the terminator as it does through
 //    translucent tissue, tinted by the tissue's own hue (red scatters further in flesh);
-//  - Blinn-Phong highlight with the material's strength and exponent (the wet sheen);
+//  - Blinn-Phong highlight with the material's strength and exponent (the tissue's sheen),
+//    plus a tight lobe with an 8 times higher exponent: the glint of the moist surface film;
 //  - hemisphere ambient (sky above, warm bounce below, "up" = the camera's up);
 //  - a subtle rim light that keeps the silhouette readable against a dark background.
 // Output is encoded to sRGB here, so the framebuffer is plain 8-bit sRGB.
 
-const int kMaxLights = 8;    // keep equal to render::kMaxLights
-const float kWrap = 0.45;    // how far light wraps past the terminator, unit: 1 (of N.L)
-const float kRim = 0.12;     // rim light strength, unit: 1
-const float kRimPower = 3.0;
+const int kMaxLights = 8;         // keep equal to render::kMaxLights
+const float kWrap = 0.3;         // how far light wraps past the terminator, unit: 1 (of N.L)
+const float kRim = 0.07;         // rim light strength, unit: 1
+const float kWetShare = 0.6;     // the glint's share of the material's specular, unit: 1
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -45,8 +46,6 @@ void main() {
   float hemi = 0.5 + 0.5 * dot(n, u_up);
   vec3 color = albedo * mix(u_ground, u_sky, hemi);
 
-  // Blinn-Phong normalised so the highlight's energy does not depend on the exponent.
-  float spec_norm = (u_shininess + 8.0) / 25.132741;  // (n + 8) / (8 pi)
   for (int i = 0; i < u_light_count; ++i) {
     vec3 l = u_light_to_light[i];
     float n_dot_l = dot(n, l);
@@ -54,12 +53,18 @@ void main() {
     float wrapped = max((n_dot_l + kWrap) / (1.0 + kWrap), 0.0);
     vec3 diffuse = albedo * (lambert + (wrapped - lambert) * hue);
     vec3 h = normalize(l + v);
-    float spec = u_specular * spec_norm * pow(max(dot(n, h), 0.0), u_shininess) *
-                 smoothstep(0.0, 0.15, n_dot_l);
+    float n_dot_h = max(dot(n, h), 0.0);
+    float sheen = pow(n_dot_h, u_shininess);
+    float sheen2 = sheen * sheen;
+    float sheen4 = sheen2 * sheen2;
+    float glint = sheen4 * sheen4;  // pow(n_dot_h, 8 * shininess) without a second pow.
+    float spec = u_specular * mix(sheen, 2.0 * glint, kWetShare) * smoothstep(0.0, 0.15, n_dot_l);
     color += u_light_radiance[i] * (diffuse + vec3(spec));
   }
 
-  float rim = pow(1.0 - max(dot(n, v), 0.0), kRimPower);
+  float grazing = 1.0 - max(dot(n, v), 0.0);
+  float grazing2 = grazing * grazing;
+  float rim = grazing2 * grazing2;
   color += kRim * rim * mix(u_sky, vec3(1.0), 0.5) * (0.5 + 0.5 * hue);
 
   frag_color = vec4(linear_to_srgb(color), 1.0);

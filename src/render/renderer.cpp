@@ -27,8 +27,8 @@ constexpr GLuint kNormalAttrib = 1;
 constexpr GLuint kColorAttrib = 2;
 
 // Hemisphere ambient, linear RGB: a cool sky and a warm bounce from below (the body cavity).
-const Eigen::Vector3f kSkyAmbient(0.16f, 0.17f, 0.19f);
-const Eigen::Vector3f kGroundAmbient(0.07f, 0.045f, 0.04f);
+const Eigen::Vector3f kSkyAmbient(0.09f, 0.10f, 0.11f);
+const Eigen::Vector3f kGroundAmbient(0.035f, 0.022f, 0.02f);
 
 [[noreturn]] void fail(const std::string& what) { throw Error(ExitCode::kInternal, "render: " + what); }
 
