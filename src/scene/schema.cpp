@@ -146,7 +146,8 @@ template <class I>
 ValueSpec<I> whole(std::int64_t lo, std::int64_t hi) {
   ValueSpec<I> spec;
   spec.type = "whole number";
-  spec.range = std::to_string(lo) + ".." + std::to_string(hi);
+  spec.range = hi == std::numeric_limits<std::int64_t>::max() ? std::to_string(lo) + " or more"
+                                                               : std::to_string(lo) + ".." + std::to_string(hi);
   spec.read = [lo, hi](const Node& node, I& out, const std::string& path, const Context&) {
     const std::int64_t v = parse_integer(node, path);
     if (v < lo || v > hi)
@@ -402,7 +403,7 @@ ValueSpec<std::vector<Selector>> selection() {
   const ValueSpec<Selector> one = selector_map();
   ValueSpec<std::vector<Selector>> spec;
   spec.type = "selector or list";
-  spec.range = "`all`, a selector map, or a list of them";
+  spec.range = "`all`, a selector map, or a list of these";
   spec.keys = one.keys;
   auto read_one = [one](const Node& node, const std::string& path, const Context& ctx) {
     Selector s;
@@ -471,7 +472,7 @@ ValueSpec<Drive> drive_spec() {
 ValueSpec<Region> region_spec() {
   return map<Region>({
       field("name", name_text(), &Region::name, "Unique within the organ; also the default part to select.").required(),
-      field("select", selection(), &Region::select, "Which vertices belong to the region; later regions take vertices from earlier ones."),
+      field("select", selection(), &Region::select, "Which vertices belong to the region (a list is a union); later regions take vertices from earlier ones."),
       field("drive", drive_spec(), &Region::drive, "The region's rhythm: L(t) = L0 (1 - amplitude phi(t - delay))."),
       field("stiffness", number(open_closed(0, 1e6)), &Region::stiffness_scale, "Multiplies the body's stiffness."),
       field("damping", number(closed(0, 1e6)), &Region::damping_scale, "Multiplies the body's damping."),
@@ -647,7 +648,7 @@ void collect_paths(const KeySpec& spec, const std::string& prefix, std::vector<s
   for (const KeySpec& key : spec.keys) {
     const std::string path = join(prefix, key.name);
     out.push_back(path);
-    const bool is_list = key.type.starts_with("list") || key.type.starts_with("selector");
+    const bool is_list = key.type.starts_with("list");
     collect_paths(key, is_list ? path + "[]" : path, out);
   }
 }
@@ -666,7 +667,7 @@ void write_tables(const KeySpec& spec, const std::string& prefix, const std::str
   out += "\n";
   for (const KeySpec& key : spec.keys) {
     if (key.keys.empty()) continue;
-    const bool is_list = key.type.starts_with("list") || key.type.starts_with("selector");
+    const bool is_list = key.type.starts_with("list");
     const std::string path = join(prefix, key.name) + (is_list ? "[]" : "");
     write_tables(key, path, "`" + path + "`", out);
   }

@@ -117,7 +117,8 @@ std::int64_t parse_integer(const Node& node, const std::string& path) {
 
 std::string format_number(double value) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.10g", value);
+  // Ten digits keep user values exact in messages; past a million, 1e9 reads better than 1000000000.
+  std::snprintf(buffer, sizeof buffer, std::fabs(value) >= 1e6 ? "%.6g" : "%.10g", value);
   std::string text = buffer;
   // "1e+09" -> "1e9", "1e-05" -> "1e-5": easier to read in docs and messages.
   const std::size_t e = text.find('e');
