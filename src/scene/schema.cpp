@@ -3,11 +3,8 @@
 #include <Eigen/Geometry>  // cross()
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <limits>
-#include <numeric>
-#include <set>
 #include <type_traits>
 #include <utility>
 
