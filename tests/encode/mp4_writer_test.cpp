@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -343,13 +344,14 @@ TEST(Mp4WriterSpeed, DISABLED_Encode720p) {
   constexpr int kUnique = 60, kFrames = 240;
   std::vector<Image> frames;
   for (int i = 0; i < kUnique; ++i) frames.push_back(organ_frame(1280, 720, i));
-  for (const char* preset : {"veryfast", "ultrafast", "superfast", "faster", "medium"}) {
+  for (const char* preset : {"veryfast", "ultrafast", "superfast", "medium"}) {
     VideoSettings s;
     s.preset = preset;
     s.crf = 20;
     s.threads = 2;
     const fs::path file = dir / (std::string(preset) + ".mp4");
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpu_start = std::clock();  // All threads: less sensitive to a busy machine.
     {
       Mp4Writer writer(file, s);
       for (int i = 0; i < kFrames; ++i) {
@@ -359,8 +361,9 @@ TEST(Mp4WriterSpeed, DISABLED_Encode720p) {
       writer.finish();
     }
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::printf("720p %-9s crf 20 threads 2: %.2f ms/frame, %.0f kB for %d frames, profile %s\n", preset,
-                ms / kFrames, fs::file_size(file) / 1e3, kFrames,
+    const double cpu_ms = 1e3 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    std::printf("720p %-9s crf 20 threads 2: %.2f ms/frame wall, %.2f ms/frame CPU, %.0f kB for %d frames, profile %s\n",
+                preset, ms / kFrames, cpu_ms / kFrames, fs::file_size(file) / 1e3, kFrames,
                 test::json_value(test::ffprobe_json(file), "profile").c_str());
   }
 }
