@@ -140,7 +140,7 @@ struct Framebuffer {
     }
   }
 
-  void destroy() {
+  void destroy() noexcept {
     if (depth) glDeleteRenderbuffers(1, &depth);
     if (color) glDeleteRenderbuffers(1, &color);
     if (fbo) glDeleteFramebuffers(1, &fbo);
@@ -170,7 +170,7 @@ struct Renderer::Impl {
   int height = 0;
   int samples = 0;
   OSMesaContext context = nullptr;
-  std::array<std::uint8_t, 4> tiny_buffer{};  ///< The 1x1 default framebuffer; we draw into FBOs.
+  mutable std::array<std::uint8_t, 4> tiny_buffer{};  ///< The 1x1 default framebuffer; we draw into FBOs.
   Framebuffer multisampled;                   ///< Drawn into when samples > 0.
   Framebuffer resolved;                       ///< Read back; drawn into directly when samples == 0.
   GLuint program = 0;
@@ -182,16 +182,26 @@ struct Renderer::Impl {
 
   void make_current() const {
     if (OSMesaGetCurrentContext() == context) return;
-    if (!OSMesaMakeCurrent(context, const_cast<std::uint8_t*>(tiny_buffer.data()), GL_UNSIGNED_BYTE, 1, 1)) {
+    if (!OSMesaMakeCurrent(context, tiny_buffer.data(), GL_UNSIGNED_BYTE, 1, 1)) {
       fail("OSMesaMakeCurrent failed");
     }
   }
 
   GLuint draw_fbo() const { return samples > 0 ? multisampled.fbo : resolved.fbo; }
 
-  void release() {
+  /// Frees everything; never throws (it runs in the destructor). GL objects die with the
+  /// context anyway, but deleting them first keeps a context-sharing future honest.
+  void release() noexcept {
     if (!context) return;
-    make_current();
+    const bool current = OSMesaGetCurrentContext() == context ||
+                         OSMesaMakeCurrent(context, tiny_buffer.data(), GL_UNSIGNED_BYTE, 1, 1);
+    if (current) release_gl_objects();
+    OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);  // Unbind so no thread keeps a dangling context.
+    OSMesaDestroyContext(context);
+    context = nullptr;
+  }
+
+  void release_gl_objects() noexcept {
     for (Surface& s : surfaces) {
       const GLuint buffers[] = {s.positions, s.normals, s.colors, s.indices};
       glDeleteBuffers(4, buffers);
@@ -201,9 +211,6 @@ struct Renderer::Impl {
     if (program) glDeleteProgram(program);
     multisampled.destroy();
     resolved.destroy();
-    OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);  // Unbind so no thread keeps a dangling context.
-    OSMesaDestroyContext(context);
-    context = nullptr;
   }
 };
 

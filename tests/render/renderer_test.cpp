@@ -242,6 +242,19 @@ TEST(Renderer, RendersAreBitIdentical) {
   EXPECT_EQ(render(a, camera_at(3)).rgb, first.rgb);
 }
 
+TEST(Renderer, OutlivesAnotherRenderer) {
+  const Shape sphere = uv_sphere(Eigen::Vector3f::Zero(), 0.5f, 24, 32);
+  Renderer a(kWidth, kHeight, 0);
+  add(a, sphere, colors(sphere, kOrgan));
+  const Image before = render(a, camera_at(3));
+  {
+    Renderer b(kWidth / 2, kHeight / 2, 2);  // Made current, then destroyed.
+    add(b, sphere, colors(sphere, kOrgan));
+    EXPECT_GT(covered_pixels(render(b, camera_at(3))), 0);
+  }
+  EXPECT_EQ(render(a, camera_at(3)).rgb, before.rgb);
+}
+
 TEST(Renderer, ReadFrameReusesTheImage) {
   Renderer renderer(kWidth, kHeight, 0);
   renderer.draw(camera_at(3), front_light(), kBackground);
