@@ -1,0 +1,16 @@
+#include <iostream>
+
+#include "app/info.h"
+#include "cli/command.h"
+
+namespace systole::cli {
+
+Command add_info_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("info", "Versions, GL renderer and available encoders.");
+  return {cmd, [] {
+            std::cout << app::system_info();
+            return 0;
+          }};
+}
+
+}  // namespace systole::cli
