@@ -1,0 +1,133 @@
+// assimp is reached only from this file: the rest of mesh/ sees OrganMesh.
+#include "mesh/import.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <fstream>
+#include <functional>
+#include <system_error>
+
+#include "common/error.h"
+#include "mesh/weld.h"
+
+namespace systole::mesh {
+namespace {
+
+// The name of the first node (depth first) that references mesh `index`, or "".
+std::string node_name_of_mesh(const aiNode* node, unsigned index) {
+  if (node == nullptr) return "";
+  for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+    if (node->mMeshes[i] == index && node->mName.length > 0) return node->mName.C_Str();
+  }
+  for (unsigned i = 0; i < node->mNumChildren; ++i) {
+    std::string name = node_name_of_mesh(node->mChildren[i], index);
+    if (!name.empty()) return name;
+  }
+  return "";
+}
+
+// Drops vertices no triangle uses (stray points in OBJ files), keeping the order.
+void drop_unused_vertices(OrganMesh& mesh) {
+  std::vector<int> remap(mesh.surface.positions.size(), -1);
+  for (const Eigen::Vector3i& t : mesh.surface.triangles) {
+    for (int k = 0; k < 3; ++k) remap[static_cast<size_t>(t[k])] = 0;
+  }
+  int next = 0;
+  for (size_t v = 0; v < remap.size(); ++v) {
+    if (remap[v] < 0) continue;
+    remap[v] = next;
+    mesh.surface.positions[static_cast<size_t>(next)] = mesh.surface.positions[v];
+    mesh.vertex_part[static_cast<size_t>(next)] = mesh.vertex_part[v];
+    ++next;
+  }
+  mesh.surface.positions.resize(static_cast<size_t>(next));
+  mesh.vertex_part.resize(static_cast<size_t>(next));
+  for (Eigen::Vector3i& t : mesh.surface.triangles) {
+    for (int k = 0; k < 3; ++k) t[k] = remap[static_cast<size_t>(t[k])];
+  }
+}
+
+void check_readable(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) {
+    throw Error(ExitCode::kNoInput, file.string() + ": mesh file not found");
+  }
+  if (std::filesystem::is_directory(file, ec)) {
+    throw Error(ExitCode::kNoInput, file.string() + ": is a directory, not a mesh file");
+  }
+  std::ifstream probe(file, std::ios::binary);
+  if (!probe) throw Error(ExitCode::kNoInput, file.string() + ": cannot read mesh file");
+}
+
+}  // namespace
+
+OrganMesh import_mesh(const std::filesystem::path& file) {
+  check_readable(file);
+
+  Assimp::Importer importer;  // No logger is created, so assimp prints nothing.
+  // Node transforms are baked into the vertices, but meshes stay separate (not merged by
+  // material) so each keeps its name as a part.
+  importer.SetPropertyInteger(AI_CONFIG_PP_PTV_KEEP_HIERARCHY, 1);
+  // Points and lines are split off by SortByPType and then skipped below.
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, 0);
+  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  const aiScene* scene = importer.ReadFile(file.string(), flags);
+  if (scene == nullptr) {
+    throw Error(ExitCode::kDataError,
+                file.string() + ": cannot read as a mesh (assimp: " + importer.GetErrorString() + ")");
+  }
+
+  OrganMesh mesh;
+  TriangleMesh& surface = mesh.surface;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* source = scene->mMeshes[m];
+    if (source == nullptr || !(source->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+    std::string name = source->mName.C_Str();
+    if (name.empty()) name = node_name_of_mesh(scene->mRootNode, m);
+    if (name.empty()) name = "mesh" + std::to_string(m);
+    int part = mesh.part_index(name);  // Meshes of the same name form one part.
+    if (part < 0) {
+      part = static_cast<int>(mesh.part_names.size());
+      mesh.part_names.push_back(name);
+    }
+
+    const int base = static_cast<int>(surface.positions.size());
+    for (unsigned v = 0; v < source->mNumVertices; ++v) {
+      const aiVector3D& p = source->mVertices[v];
+      const Eigen::Vector3d position(p.x, p.y, p.z);
+      if (!position.allFinite()) {
+        throw Error(ExitCode::kDataError, file.string() + ": mesh '" + name + "' has a non-finite vertex coordinate");
+      }
+      surface.positions.push_back(position);
+      mesh.vertex_part.push_back(part);
+    }
+    for (unsigned f = 0; f < source->mNumFaces; ++f) {
+      const aiFace& face = source->mFaces[f];
+      if (face.mNumIndices != 3) continue;  // A point or line left in a mixed mesh.
+      Eigen::Vector3i triangle;
+      for (int k = 0; k < 3; ++k) {
+        if (face.mIndices[k] >= source->mNumVertices) {
+          throw Error(ExitCode::kDataError, file.string() + ": mesh '" + name + "' has a vertex index out of range");
+        }
+        triangle[k] = base + static_cast<int>(face.mIndices[k]);
+      }
+      surface.triangles.push_back(triangle);
+    }
+  }
+  if (surface.triangles.empty()) {
+    throw Error(ExitCode::kDataError, file.string() + ": the file holds no triangles");
+  }
+
+  weld(mesh, default_weld_tolerance(surface));
+  if (surface.triangles.empty()) {
+    throw Error(ExitCode::kDataError, file.string() + ": every triangle has zero size");
+  }
+  drop_unused_vertices(mesh);
+  return mesh;
+}
+
+}  // namespace systole::mesh

@@ -1,0 +1,199 @@
+#include "mesh/inspect.h"
+
+#include <algorithm>
+#include <Eigen/Geometry>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+namespace systole::mesh {
+namespace {
+
+// One directed edge of a triangle, keyed by its undirected vertex pair.
+struct EdgeUse {
+  int lo, hi;     // Vertex indices, lo < hi.
+  bool forward;   // The triangle walks lo -> hi.
+  int triangle;
+};
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[static_cast<size_t>(i)] != i) {
+    parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
+    i = parent[static_cast<size_t>(i)];
+  }
+  return i;
+}
+
+std::string edge_at(const TriangleMesh& mesh, int a, int b) {
+  return "between " + format_position(mesh.positions[static_cast<size_t>(a)]) + " and " +
+         format_position(mesh.positions[static_cast<size_t>(b)]);
+}
+
+}  // namespace
+
+std::string format_position(const Eigen::Vector3d& p) {
+  char text[128];
+  std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g) m", p.x(), p.y(), p.z());
+  return text;
+}
+
+MeshReport inspect(const TriangleMesh& mesh) {
+  MeshReport report;
+  const int n = static_cast<int>(mesh.positions.size());
+  report.vertices = n;
+  report.triangles = static_cast<int>(mesh.triangles.size());
+
+  // Triangles that can be measured at all: indices in range, finite corners.
+  std::vector<char> valid(mesh.triangles.size(), 0);
+  int first_invalid = -1;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    bool ok = (tri.array() >= 0).all() && (tri.array() < n).all();
+    for (int k = 0; ok && k < 3; ++k) ok = mesh.positions[static_cast<size_t>(tri[k])].allFinite();
+    valid[t] = ok;
+    if (!ok && first_invalid < 0) first_invalid = static_cast<int>(t);
+    report.invalid_triangles += !ok;
+  }
+
+  // Degenerate: a repeated index, or an area negligible against the longest edge
+  // (collinear corners), measured relative so it holds at any scale.
+  int first_degenerate = -1;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (!valid[t]) continue;
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    bool degenerate = tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0];
+    if (!degenerate) {
+      const Eigen::Vector3d& a = mesh.positions[static_cast<size_t>(tri[0])];
+      const Eigen::Vector3d& b = mesh.positions[static_cast<size_t>(tri[1])];
+      const Eigen::Vector3d& c = mesh.positions[static_cast<size_t>(tri[2])];
+      const double longest2 = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+      degenerate = (b - a).cross(c - a).norm() <= 1e-12 * longest2;
+    }
+    if (degenerate) {
+      ++report.degenerate_triangles;
+      if (first_degenerate < 0) first_degenerate = static_cast<int>(t);
+    }
+  }
+
+  // Edges: sort every directed use by its vertex pair, then count uses per pair.
+  std::vector<EdgeUse> uses;
+  uses.reserve(mesh.triangles.size() * 3);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (!valid[t]) continue;
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const int a = tri[k], b = tri[(k + 1) % 3];
+      if (a == b) continue;  // A repeated index has no edge there.
+      uses.push_back({std::min(a, b), std::max(a, b), a < b, static_cast<int>(t)});
+    }
+  }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return std::tie(x.lo, x.hi, x.triangle, x.forward) < std::tie(y.lo, y.hi, y.triangle, y.forward);
+  });
+  std::array<int, 2> first_boundary{-1, -1}, first_nonmanifold{-1, -1}, first_inconsistent{-1, -1};
+  for (size_t i = 0; i < uses.size();) {
+    size_t j = i;
+    while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
+    const size_t count = j - i;
+    if (count == 1) {
+      if (report.boundary_edges++ == 0) first_boundary = {uses[i].lo, uses[i].hi};
+    } else if (count >= 3) {
+      if (report.nonmanifold_edges++ == 0) first_nonmanifold = {uses[i].lo, uses[i].hi};
+    } else if (uses[i].forward == uses[i + 1].forward) {
+      if (report.inconsistent_edges++ == 0) first_inconsistent = {uses[i].lo, uses[i].hi};
+    }
+    i = j;
+  }
+
+  // Connected pieces of triangles (union-find over vertices).
+  std::vector<int> parent(static_cast<size_t>(n));
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<char> used(static_cast<size_t>(n), 0);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (!valid[t]) continue;
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) used[static_cast<size_t>(tri[k])] = 1;
+    const int r0 = find_root(parent, tri[0]);
+    for (int k = 1; k < 3; ++k) {
+      const int r = find_root(parent, tri[k]);
+      if (r != r0) parent[static_cast<size_t>(std::max(r, r0))] = std::min(r, r0);
+    }
+  }
+  int first_unused = -1;
+  for (int v = 0; v < n; ++v) {
+    if (!used[static_cast<size_t>(v)]) {
+      if (report.unused_vertices++ == 0) first_unused = v;
+    } else if (find_root(parent, v) == v) {
+      ++report.components;
+    }
+  }
+
+  // Signed volume by the divergence theorem, about the bounding-box centre so large
+  // coordinates do not cancel digits.
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+  for (const Eigen::Vector3d& p : mesh.positions) {
+    if (p.allFinite()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  }
+  const Eigen::Vector3d centre = report.vertices > 0 && (hi.array() >= lo.array()).all()
+                                     ? Eigen::Vector3d(0.5 * (lo + hi))
+                                     : Eigen::Vector3d::Zero();
+  double six_volume = 0;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (!valid[t]) continue;
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    const Eigen::Vector3d a = mesh.positions[static_cast<size_t>(tri[0])] - centre;
+    const Eigen::Vector3d b = mesh.positions[static_cast<size_t>(tri[1])] - centre;
+    const Eigen::Vector3d c = mesh.positions[static_cast<size_t>(tri[2])] - centre;
+    six_volume += a.dot(b.cross(c));
+  }
+  report.volume_m3 = six_volume / 6.0;
+
+  // Notes: what, where, and what Systole does about it.
+  const bool volume_usable = report.encloses_volume();
+  const std::string no_volume = "; the volume constraint is disabled for this organ";
+  auto count = [](int k, const char* what) { return std::to_string(k) + " " + what; };
+  if (report.triangles == 0) report.notes.push_back("empty surface: no triangles; the organ cannot be simulated");
+  if (report.invalid_triangles > 0) {
+    const Eigen::Vector3i& t = mesh.triangles[static_cast<size_t>(first_invalid)];
+    report.notes.push_back("invalid triangles: " + count(report.invalid_triangles, "with an index out of range or a non-finite corner") +
+                           " (e.g. triangle " + std::to_string(first_invalid) + " = [" + std::to_string(t[0]) + ", " +
+                           std::to_string(t[1]) + ", " + std::to_string(t[2]) + "] of " + std::to_string(n) +
+                           " vertices); they are ignored by every check" + no_volume);
+  }
+  if (report.degenerate_triangles > 0) {
+    const Eigen::Vector3i& t = mesh.triangles[static_cast<size_t>(first_degenerate)];
+    report.notes.push_back("degenerate triangles: " + count(report.degenerate_triangles, "with zero area") + " (e.g. at " +
+                           format_position(mesh.positions[static_cast<size_t>(t[0])]) +
+                           "); they carry no area, so no mass, and give no normal");
+  }
+  if (report.boundary_edges > 0) {
+    report.notes.push_back("open surface: " + count(report.boundary_edges, "boundary edges") + " (e.g. " +
+                           edge_at(mesh, first_boundary[0], first_boundary[1]) + ")" + no_volume);
+  }
+  if (report.nonmanifold_edges > 0) {
+    report.notes.push_back("non-manifold surface: " + count(report.nonmanifold_edges, "edges shared by three or more triangles") +
+                           " (e.g. " + edge_at(mesh, first_nonmanifold[0], first_nonmanifold[1]) + ")" + no_volume);
+  }
+  if (report.inconsistent_edges > 0) {
+    report.notes.push_back("inconsistent orientation: " + count(report.inconsistent_edges, "edges whose two triangles face opposite ways") +
+                           " (e.g. " + edge_at(mesh, first_inconsistent[0], first_inconsistent[1]) +
+                           "); shading is wrong there" + no_volume);
+  }
+  if (report.components > 1) {
+    report.notes.push_back("separate pieces: " + std::to_string(report.components) +
+                           " connected components; they move as one organ but share no springs");
+  }
+  if (report.unused_vertices > 0) {
+    report.notes.push_back("unused vertices: " + count(report.unused_vertices, "vertices in no triangle") + " (e.g. at " +
+                           format_position(mesh.positions[static_cast<size_t>(first_unused)]) +
+                           "); they are not part of the surface and carry no springs");
+  }
+  if (volume_usable && report.volume_m3 < 0) {
+    report.notes.push_back("inside out: the closed surface has negative volume (" + std::to_string(report.volume_m3) +
+                           " m^3); its triangles face inwards");
+  }
+  return report;
+}
+
+}  // namespace systole::mesh

@@ -1,0 +1,137 @@
+#include "mesh/organ.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+
+#include "common/error.h"
+#include "mesh/import.h"
+#include "mesh/procedural.h"
+
+namespace systole::mesh {
+namespace {
+
+std::string where(const scene::Origin& origin) {
+  if (origin.file.empty()) return "";
+  std::string text = origin.file;
+  if (origin.line > 0) text += ":" + std::to_string(origin.line);
+  if (origin.column > 0) text += ":" + std::to_string(origin.column);
+  return text + ": ";
+}
+
+std::string part_list(const OrganMesh& mesh) {
+  if (mesh.part_names.empty()) return "the mesh has no named parts";
+  std::string text = "available parts: ";
+  for (size_t i = 0; i < mesh.part_names.size(); ++i) text += (i ? ", " : "") + mesh.part_names[i];
+  return text;
+}
+
+// Whether a vertex of part `part` at `p` is selected; `selector_part` is the index of a
+// kPart selector's part (resolved once by the caller).
+bool selects(const scene::Selector& selector, int selector_part, int part, const Eigen::Vector3d& p) {
+  switch (selector.kind) {
+    case scene::SelectorKind::kAll:
+      return true;
+    case scene::SelectorKind::kPart:
+      return part == selector_part;
+    case scene::SelectorKind::kSphere:
+      return (p - selector.center).squaredNorm() <= selector.radius_m * selector.radius_m;
+    case scene::SelectorKind::kBox:
+      return (p.array() >= selector.min.array()).all() && (p.array() <= selector.max.array()).all();
+    case scene::SelectorKind::kHalfSpace:
+      return (p - selector.point).dot(selector.normal) >= 0;
+  }
+  return false;
+}
+
+// Units, centring, then the transform: x' = T + Rz Ry Rx (s x).
+void place(OrganMesh& mesh, const scene::MeshSource& source, const scene::Transform& transform) {
+  std::vector<Eigen::Vector3d>& positions = mesh.surface.positions;
+  for (Eigen::Vector3d& p : positions) p *= source.unit_m;
+  if (source.center && !positions.empty()) {
+    Eigen::Vector3d lo = positions.front(), hi = positions.front();
+    for (const Eigen::Vector3d& p : positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const Eigen::Vector3d centre = 0.5 * (lo + hi);
+    for (Eigen::Vector3d& p : positions) p -= centre;
+  }
+  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(transform.rotate_rad.z(), Eigen::Vector3d::UnitZ()) *
+                                    Eigen::AngleAxisd(transform.rotate_rad.y(), Eigen::Vector3d::UnitY()) *
+                                    Eigen::AngleAxisd(transform.rotate_rad.x(), Eigen::Vector3d::UnitX()))
+                                       .toRotationMatrix();
+  for (Eigen::Vector3d& p : positions) p = transform.translate_m + rotation * (transform.scale * p);
+}
+
+}  // namespace
+
+std::vector<int> assign_regions(const OrganMesh& mesh, const std::vector<scene::Region>& regions) {
+  const std::vector<Eigen::Vector3d>& positions = mesh.surface.positions;
+  std::vector<int> vertex_region(positions.size(), -1);
+  for (size_t r = 0; r < regions.size(); ++r) {
+    const scene::Region& region = regions[r];
+    // An empty selection means the part named like the region.
+    std::vector<scene::Selector> select = region.select;
+    if (select.empty()) {
+      scene::Selector by_name;
+      by_name.kind = scene::SelectorKind::kPart;
+      by_name.part = region.name;
+      by_name.origin = region.origin;
+      select.push_back(by_name);
+    }
+    std::vector<char> chosen(positions.size(), 0);
+    for (const scene::Selector& selector : select) {
+      int part = -1;
+      if (selector.kind == scene::SelectorKind::kPart) {
+        part = mesh.part_index(selector.part);
+        if (part < 0) {
+          throw Error(ExitCode::kDataError, where(selector.origin) + "region '" + region.name + "': the mesh has no part '" +
+                                                selector.part + "' (" + part_list(mesh) + ")");
+        }
+      }
+      for (size_t v = 0; v < positions.size(); ++v) {
+        const int vertex_part = v < mesh.vertex_part.size() ? mesh.vertex_part[v] : -1;
+        chosen[v] |= selects(selector, part, vertex_part, positions[v]);
+      }
+    }
+    int count = 0;
+    for (size_t v = 0; v < positions.size(); ++v) {
+      if (chosen[v]) vertex_region[v] = static_cast<int>(r), ++count;
+    }
+    if (count == 0) {
+      throw Error(ExitCode::kDataError, where(region.origin) + "region '" + region.name +
+                                            "' selects no vertex of the organ (selectors act on world positions, in metres)");
+    }
+  }
+  return vertex_region;
+}
+
+OrganGeometry build_organ_geometry(const scene::Organ& organ) {
+  const std::string label = where(organ.origin) + "organ '" + organ.name + "'";
+  OrganGeometry geometry;
+  if (!organ.mesh.file.empty()) {
+    geometry.mesh = import_mesh(organ.mesh.file);
+  } else if (!organ.mesh.procedural.empty()) {
+    geometry.mesh = generate_organ(organ.mesh.procedural, organ.mesh.detail);
+  } else {
+    throw Error(ExitCode::kDataError, label + ": no mesh (give mesh.file or mesh.procedural)");
+  }
+  if (geometry.mesh.surface.triangles.empty()) {
+    throw Error(ExitCode::kDataError, label + ": the surface has no triangles");
+  }
+  place(geometry.mesh, organ.mesh, organ.transform);
+
+  geometry.report = inspect(geometry.mesh.surface);
+  // A closed surface that faces inwards is turned outwards: normals and volume need it.
+  if (geometry.report.encloses_volume() && geometry.report.volume_m3 < 0) {
+    for (Eigen::Vector3i& t : geometry.mesh.surface.triangles) std::swap(t[1], t[2]);
+    geometry.report = inspect(geometry.mesh.surface);
+    geometry.report.notes.push_back("inside out: the closed surface had negative volume; all triangles were flipped to face outwards");
+  }
+  try {
+    geometry.vertex_region = assign_regions(geometry.mesh, organ.regions);
+  } catch (const Error& error) {
+    throw Error(error.code(), std::string(error.what()) + " [in " + label + "]");
+  }
+  return geometry;
+}
+
+}  // namespace systole::mesh

@@ -1,0 +1,26 @@
+#include "mesh/procedural.h"
+
+#include "common/error.h"
+#include "mesh/procedural/organs.h"
+
+namespace systole::mesh {
+
+std::vector<std::string> procedural_organs() { return {"heart"}; }
+
+OrganMesh generate_organ(const std::string& name, int detail) {
+  if (detail < 1 || detail > 6) {
+    throw Error(ExitCode::kDataError, "procedural organ '" + name + "': detail must be 1 to 6, got " +
+                                          std::to_string(detail));
+  }
+  if (name == "heart") return procedural::heart(detail);
+  std::string known;
+  for (const std::string& organ : procedural_organs()) known += (known.empty() ? "" : ", ") + organ;
+  throw Error(ExitCode::kDataError, "unknown procedural organ '" + name + "' (known: " + known + ")");
+}
+
+namespace procedural {
+
+int target_triangles(int detail) { return 1200 << (detail - 1); }
+
+}  // namespace procedural
+}  // namespace systole::mesh

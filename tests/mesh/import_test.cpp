@@ -1,0 +1,151 @@
+#include "mesh/import.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "common/error.h"
+#include "mesh/inspect.h"
+#include "test_meshes.h"
+
+namespace systole::mesh {
+namespace {
+
+// Two cubes as OBJ objects named "left" and "right", sharing no vertex.
+std::string two_cube_obj() {
+  const TriangleMesh c = testing::cube();
+  std::ostringstream obj;
+  for (int piece = 0; piece < 2; ++piece) {
+    obj << "o " << (piece == 0 ? "left" : "right") << "\n";
+    for (const auto& p : c.positions) obj << "v " << p.x() + 3 * piece << " " << p.y() << " " << p.z() << "\n";
+    for (const auto& t : c.triangles) {
+      obj << "f " << t[0] + 1 + 8 * piece << " " << t[1] + 1 + 8 * piece << " " << t[2] + 1 + 8 * piece << "\n";
+    }
+  }
+  return obj.str();
+}
+
+// A cube as ASCII STL: every facet with its own three vertices.
+std::string cube_stl() {
+  const TriangleMesh c = testing::cube();
+  std::ostringstream stl;
+  stl << "solid cube\n";
+  for (const auto& t : c.triangles) {
+    const Eigen::Vector3d n = (c.positions[t[1]] - c.positions[t[0]]).cross(c.positions[t[2]] - c.positions[t[0]]).normalized();
+    stl << "facet normal " << n.x() << " " << n.y() << " " << n.z() << "\n outer loop\n";
+    for (int k = 0; k < 3; ++k) {
+      const auto& p = c.positions[t[k]];
+      stl << "  vertex " << p.x() << " " << p.y() << " " << p.z() << "\n";
+    }
+    stl << " endloop\nendfacet\n";
+  }
+  stl << "endsolid cube\n";
+  return stl.str();
+}
+
+std::string tetrahedron_ply() {
+  const TriangleMesh t = testing::tetrahedron();
+  std::ostringstream ply;
+  ply << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+         "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const auto& p : t.positions) ply << p.x() << " " << p.y() << " " << p.z() << "\n";
+  for (const auto& f : t.triangles) ply << "3 " << f[0] << " " << f[1] << " " << f[2] << "\n";
+  return ply.str();
+}
+
+TEST(Import, ObjObjectsBecomeParts) {
+  const auto file = testing::scratch("two_cubes.obj");
+  testing::write_text(file, two_cube_obj());
+  const OrganMesh m = import_mesh(file);
+  const MeshReport r = inspect(m.surface);
+  EXPECT_TRUE(r.clean()) << (r.notes.empty() ? "" : r.notes.front());
+  EXPECT_EQ(r.components, 2);
+  EXPECT_NEAR(r.volume_m3, 2.0, 1e-9);
+  ASSERT_EQ(m.vertex_part.size(), m.surface.positions.size());
+  ASSERT_GE(m.part_index("left"), 0);
+  ASSERT_GE(m.part_index("right"), 0);
+  for (size_t v = 0; v < m.surface.positions.size(); ++v) {
+    const bool is_left = m.surface.positions[v].x() < 2;
+    EXPECT_EQ(m.vertex_part[v], m.part_index(is_left ? "left" : "right"));
+  }
+}
+
+TEST(Import, AsciiStlIsWeldedClosed) {
+  const auto file = testing::scratch("cube.stl");
+  testing::write_text(file, cube_stl());
+  const OrganMesh m = import_mesh(file);
+  EXPECT_EQ(m.surface.positions.size(), 8u);
+  EXPECT_EQ(m.surface.triangles.size(), 12u);
+  const MeshReport r = inspect(m.surface);
+  EXPECT_TRUE(r.clean());
+  EXPECT_NEAR(r.volume_m3, 1.0, 1e-9);
+  EXPECT_EQ(m.part_names.size(), 1u);
+}
+
+TEST(Import, AsciiPly) {
+  const auto file = testing::scratch("tetrahedron.ply");
+  testing::write_text(file, tetrahedron_ply());
+  const OrganMesh m = import_mesh(file);
+  const MeshReport r = inspect(m.surface);
+  EXPECT_TRUE(r.clean());
+  EXPECT_NEAR(r.volume_m3, 8.0 / 3.0, 1e-6);
+}
+
+TEST(Import, MissingFileIsNoInput) {
+  try {
+    import_mesh(testing::scratch("no_such_mesh.obj"));
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kNoInput);
+    EXPECT_NE(std::string(e.what()).find("no_such_mesh.obj"), std::string::npos);
+  }
+}
+
+TEST(Import, GarbageIsDataError) {
+  for (const char* name : {"garbage.obj", "garbage.stl", "garbage.ply", "garbage.glb", "garbage.bin"}) {
+    const auto file = testing::scratch(name);
+    std::string bytes;
+    for (int i = 0; i < 4096; ++i) bytes.push_back(static_cast<char>((i * 7919 + 13) % 256));
+    testing::write_text(file, bytes);
+    ::testing::internal::CaptureStdout();
+    try {
+      import_mesh(file);
+      ADD_FAILURE() << name << ": expected an error";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::kDataError) << name << ": " << e.what();
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(::testing::internal::GetCapturedStdout(), "") << name << ": assimp printed to stdout";
+  }
+}
+
+TEST(Import, FileWithoutTrianglesIsDataError) {
+  const auto file = testing::scratch("points.obj");
+  testing::write_text(file, "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\n");
+  try {
+    import_mesh(file);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kDataError);
+  }
+}
+
+TEST(Import, SharedOrganMeshesAreClosed) {
+  const std::filesystem::path dir = SYSTOLE_SOURCE_DIR "/../shared/meshes";
+  if (!std::filesystem::is_directory(dir)) GTEST_SKIP() << "no shared meshes at " << dir;
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".obj") continue;
+    ++count;
+    const OrganMesh m = import_mesh(entry.path());
+    const MeshReport r = inspect(m.surface);
+    EXPECT_TRUE(r.closed()) << entry.path() << ": " << (r.notes.empty() ? "" : r.notes.front());
+    EXPECT_EQ(r.inconsistent_edges, 0) << entry.path();
+    EXPECT_EQ(r.components, 1) << entry.path();
+    EXPECT_NE(r.volume_m3, 0) << entry.path();
+  }
+  if (count == 0) GTEST_SKIP() << "no .obj files in " << dir;
+}
+
+}  // namespace
+}  // namespace systole::mesh

@@ -1,0 +1,178 @@
+#include "mesh/organ.h"
+
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "test_meshes.h"
+
+namespace systole::mesh {
+namespace {
+
+using scene::Region;
+using scene::Selector;
+using scene::SelectorKind;
+
+// A 2 x 1 x 1 grid of points in two parts, "low" (x < 1) and "high".
+OrganMesh two_part_box() {
+  OrganMesh m;
+  for (int i = 0; i <= 2; ++i) {
+    for (int j = 0; j <= 1; ++j) {
+      for (int k = 0; k <= 1; ++k) {
+        m.surface.positions.emplace_back(i, j, k);
+        m.vertex_part.push_back(i < 1 ? 0 : 1);
+      }
+    }
+  }
+  m.part_names = {"low", "high"};
+  return m;
+}
+
+Region region(const std::string& name, std::vector<Selector> select, int line = 7) {
+  Region r;
+  r.name = name;
+  r.select = std::move(select);
+  r.origin = {"scene.yaml", line, 5};
+  return r;
+}
+
+Selector selector(SelectorKind kind) {
+  Selector s;
+  s.kind = kind;
+  s.origin = {"scene.yaml", 9, 9};
+  return s;
+}
+
+int count_of(const std::vector<int>& regions, int r) {
+  return static_cast<int>(std::count(regions.begin(), regions.end(), r));
+}
+
+TEST(AssignRegions, EachSelectorKind) {
+  const OrganMesh m = two_part_box();  // 12 vertices.
+  Selector part = selector(SelectorKind::kPart);
+  part.part = "high";
+  Selector sphere = selector(SelectorKind::kSphere);
+  sphere.center = Eigen::Vector3d(0, 0, 0);
+  sphere.radius_m = 1.01;  // (0,0,0) and its three neighbours.
+  Selector box = selector(SelectorKind::kBox);
+  box.min = Eigen::Vector3d(-1, -1, 0.5);
+  box.max = Eigen::Vector3d(3, 3, 2);  // z = 1: six vertices.
+  Selector half = selector(SelectorKind::kHalfSpace);
+  half.point = Eigen::Vector3d(0, 0.5, 0);
+  half.normal = Eigen::Vector3d(0, 1, 0);  // y = 1: six vertices.
+
+  EXPECT_EQ(count_of(assign_regions(m, {region("all", {selector(SelectorKind::kAll)})}), 0), 12);
+  EXPECT_EQ(count_of(assign_regions(m, {region("p", {part})}), 0), 8);
+  EXPECT_EQ(count_of(assign_regions(m, {region("s", {sphere})}), 0), 4);
+  EXPECT_EQ(count_of(assign_regions(m, {region("b", {box})}), 0), 6);
+  EXPECT_EQ(count_of(assign_regions(m, {region("h", {half})}), 0), 6);
+  // A union of selectors.
+  EXPECT_EQ(count_of(assign_regions(m, {region("u", {box, half})}), 0), 9);
+  // No select: the part named like the region.
+  EXPECT_EQ(count_of(assign_regions(m, {region("low", {})}), 0), 4);
+}
+
+TEST(AssignRegions, LaterRegionsOverride) {
+  const OrganMesh m = two_part_box();
+  Selector high = selector(SelectorKind::kPart);
+  high.part = "high";
+  const std::vector<int> r = assign_regions(m, {region("body", {selector(SelectorKind::kAll)}), region("high", {high})});
+  EXPECT_EQ(count_of(r, 0), 4);
+  EXPECT_EQ(count_of(r, 1), 8);
+  EXPECT_EQ(count_of(r, -1), 0);
+  // Without regions every vertex is undriven.
+  EXPECT_EQ(count_of(assign_regions(m, {}), -1), 12);
+}
+
+TEST(AssignRegions, EmptyRegionIsAnErrorWithItsOrigin) {
+  const OrganMesh m = two_part_box();
+  Selector far = selector(SelectorKind::kSphere);
+  far.center = Eigen::Vector3d(10, 10, 10);
+  far.radius_m = 0.5;
+  try {
+    assign_regions(m, {region("nowhere", {far}, 42)});
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kDataError);
+    const std::string what = e.what();
+    EXPECT_NE(what.find("nowhere"), std::string::npos) << what;
+    EXPECT_NE(what.find("scene.yaml:42"), std::string::npos) << what;
+  }
+}
+
+TEST(AssignRegions, UnknownPartListsTheParts) {
+  const OrganMesh m = two_part_box();
+  Selector part = selector(SelectorKind::kPart);
+  part.part = "middle";
+  for (const Region& r : {region("r", {part}), region("middle", {})}) {
+    try {
+      assign_regions(m, {r});
+      FAIL() << "expected an error";
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(e.code(), ExitCode::kDataError);
+      EXPECT_NE(what.find("'middle'"), std::string::npos) << what;
+      EXPECT_NE(what.find("low, high"), std::string::npos) << what;
+      EXPECT_NE(what.find("scene.yaml:"), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(BuildOrganGeometry, ProceduralHeartWithTransformAndRegions) {
+  scene::Organ organ;
+  organ.name = "heart";
+  organ.mesh.procedural = "heart";
+  organ.mesh.detail = 1;
+  organ.transform.translate_m = Eigen::Vector3d(1, 2, 3);
+  organ.transform.scale = 2;
+  organ.regions = {region("left_ventricle", {}), region("apex", {})};
+  const OrganGeometry g = build_organ_geometry(organ);
+  EXPECT_TRUE(g.report.clean());
+  EXPECT_GT(g.report.volume_m3, 0);
+  // Centred, scaled, then moved: the bounding-box centre is the translation.
+  Eigen::Vector3d lo = g.mesh.surface.positions.front(), hi = lo;
+  for (const auto& p : g.mesh.surface.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  EXPECT_TRUE((0.5 * (lo + hi)).isApprox(Eigen::Vector3d(1, 2, 3), 1e-12));
+  EXPECT_GT(hi.y() - lo.y(), 0.2);  // Twice the ~12-15 cm heart.
+  ASSERT_EQ(g.vertex_region.size(), g.mesh.surface.positions.size());
+  EXPECT_GT(count_of(g.vertex_region, 0), 0);
+  EXPECT_GT(count_of(g.vertex_region, 1), 0);
+  EXPECT_GT(count_of(g.vertex_region, -1), 0);
+}
+
+TEST(BuildOrganGeometry, FileUnitsRotationAndInsideOutRepair) {
+  // An inside-out cube in millimetres.
+  TriangleMesh cube = testing::cube();
+  std::string obj;
+  for (const auto& p : cube.positions) obj += "v " + std::to_string(p.x() * 10) + " " + std::to_string(p.y() * 10) + " " + std::to_string(p.z() * 10) + "\n";
+  for (const auto& t : cube.triangles) obj += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[2] + 1) + " " + std::to_string(t[1] + 1) + "\n";
+  const auto file = testing::scratch("inside_out_cube.obj");
+  testing::write_text(file, obj);
+
+  scene::Organ organ;
+  organ.name = "box";
+  organ.mesh.file = file.string();
+  organ.mesh.unit_m = 0.001;
+  organ.transform.rotate_rad = Eigen::Vector3d(0, 0, M_PI / 2);  // +X goes to +Y.
+  organ.transform.translate_m = Eigen::Vector3d(0.5, 0, 0);
+  Selector right = selector(SelectorKind::kHalfSpace);
+  right.point = Eigen::Vector3d(0.5, 0, 0);
+  right.normal = Eigen::Vector3d(0, 1, 0);  // Selectors act in world space.
+  organ.regions = {region("top", {right})};
+  const OrganGeometry g = build_organ_geometry(organ);
+  EXPECT_TRUE(g.report.clean());
+  EXPECT_NEAR(g.report.volume_m3, 1e-6, 1e-12);  // Flipped to face outwards.
+  bool noted = false;
+  for (const auto& n : g.report.notes) noted |= n.find("inside out") != std::string::npos;
+  EXPECT_TRUE(noted);
+  EXPECT_EQ(count_of(g.vertex_region, 0), 4);
+  for (const auto& p : g.mesh.surface.positions) EXPECT_NEAR(std::abs(p.x() - 0.5), 0.005, 1e-12);
+}
+
+TEST(BuildOrganGeometry, NoMeshIsAnError) {
+  scene::Organ organ;
+  organ.name = "ghost";
+  EXPECT_THROW(build_organ_geometry(organ), Error);
+}
+
+}  // namespace
+}  // namespace systole::mesh
