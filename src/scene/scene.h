@@ -122,6 +122,7 @@ struct Body {
   double damping_s = 0.01;        ///< Stiffness-proportional damping time (c = k * damping_s). unit: s
   double volume_stiffness_Pa = 20000;  ///< Bulk modulus of the enclosed volume; 0 = no volume constraint. unit: Pa
   double drag_per_s = 1.0;        ///< Velocity damping towards rest (the surrounding tissue). unit: 1/s
+  double bending_N_per_m = 0;     ///< Stiffness of the springs across each edge (0: no bending). unit: N/m
 };
 
 struct Organ {
@@ -174,12 +175,48 @@ struct Output {
   int frame_count() const;  ///< round(duration * fps).
 };
 
+// ---------------------------------------------------------------------------------------
+// Scripted interactions and contact.
+
+enum class InteractionKind {
+  kPoke,  ///< A force on the vertices near a point, over an interval.
+  kGrab,  ///< The vertices near a point follow a handle along a path, then are let go.
+};
+
+/// A handle position at a time: key of a grab's path.
+struct PathKey {
+  double time_s = 0;                                   ///< unit: s
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< unit: m
+};
+
+struct Interaction {
+  InteractionKind kind = InteractionKind::kPoke;
+  std::string organ;                                 ///< Name of the organ touched.
+  Eigen::Vector3d at_m = Eigen::Vector3d::Zero();    ///< Centre of the touched patch, world space at rest. unit: m
+  double radius_m = 0.01;                            ///< Vertices within this distance of at_m are touched. unit: m
+  Eigen::Vector3d force_N = Eigen::Vector3d::Zero(); ///< kPoke: total force, shared by the patch's vertices. unit: N
+  double start_s = 0;                                ///< kPoke: when the push starts. unit: s
+  double duration_s = 0.1;                           ///< kPoke: how long it lasts. unit: s
+  std::vector<PathKey> path;                         ///< kGrab: the handle's path, smoothly interpolated; released after the last key.
+  double stiffness_N_per_m = 2000;                   ///< kGrab: stiffness holding each vertex to the handle. unit: N/m
+  Origin origin;
+};
+
+/// A plane the organs cannot pass (a table, the diaphragm's floor).
+struct Floor {
+  bool enabled = false;
+  Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  ///< A point on the plane. unit: m
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< Points to the free side (normalised). unit: 1
+};
+
 struct Scene {
   std::string path;         ///< The YAML file it came from.
   std::string name;         ///< File stem: names default outputs.
   std::uint64_t seed = 1;   ///< Seeds every random choice (irregular rhythms, tuning).
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< unit: m/s^2
   std::vector<Organ> organs;
+  std::vector<Interaction> interactions;
+  Floor floor;
   Solver solver;
   Camera camera;
   std::vector<Light> lights;

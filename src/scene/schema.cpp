@@ -523,6 +523,7 @@ ValueSpec<Organ> organ_spec() {
                 field("damping", quantity(Dimension::kTime, closed(0, 1)), &Body::damping_s, "Stiffness-proportional damping time (c = k damping)."),
                 field("volume_stiffness", quantity(Dimension::kPressure, closed(0, 1e9)), &Body::volume_stiffness_Pa, "Bulk modulus of the enclosed volume; 0 = no volume constraint."),
                 field("drag", quantity(Dimension::kRate, closed(0, 1000)), &Body::drag_per_s, "Velocity damping towards rest (the surrounding tissue)."),
+                field("bending", quantity(Dimension::kStiffness, closed(0, 1e9)), &Body::bending_N_per_m, "Stiffness of the springs across each edge, which resist folding; 0 = none."),
             }), &Organ::body, "The soft body's physical parameters."),
       field("regions", list(region_spec(), 0, 256, "list of regions"), &Organ::regions, "Parts with their own rhythm and stiffness, applied in order."),
   }, [](const Node& node, Organ& o, const std::string& path, const Context&) {
@@ -556,6 +557,56 @@ ValueSpec<Solver> solver_spec() {
       dt,
       field("substeps", whole<int>(1, 200), &Solver::substeps, "XPBD substeps per step."),
   }, [](const Node& node, Solver& s, const std::string&, const Context&) { s.origin = node.origin; });
+}
+
+ValueSpec<Interaction> interaction_spec() {
+  auto key = map<PathKey>({
+      field("time", quantity(Dimension::kTime, closed(0, 3600)), &PathKey::time_s, "When the handle is here.").required(),
+      field("position", vec3(Dimension::kLength), &PathKey::position_m, "Where the handle is.").required(),
+  });
+  auto common = [](std::vector<Field<Interaction>> extra) {
+    std::vector<Field<Interaction>> fields = {
+        field("organ", name_text(), &Interaction::organ, "Name of the organ touched.").required(),
+        field("at", vec3(Dimension::kLength), &Interaction::at_m, "Centre of the touched patch (world space, rest shape).").required(),
+        field("radius", quantity(Dimension::kLength, open_closed(0, 1000)), &Interaction::radius_m, "Vertices within this distance of `at` are touched."),
+    };
+    fields.insert(fields.end(), extra.begin(), extra.end());
+    return fields;
+  };
+  auto poke = map<Interaction>(common({
+      field("force", vec3(Dimension::kForce), &Interaction::force_N, "Total force, shared by the patch's vertices.").required(),
+      field("start", quantity(Dimension::kTime, closed(0, 3600)), &Interaction::start_s, "When the push starts."),
+      field("duration", quantity(Dimension::kTime, open_closed(0, 3600)), &Interaction::duration_s, "How long the push lasts."),
+  }));
+  auto grab = map<Interaction>(common({
+      field("path", list(key, 1, 1024, "list of path keys"), &Interaction::path,
+            "Handle positions at increasing times; the patch follows from the first key and is let go after the last.").required(),
+      field("stiffness", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Interaction::stiffness_N_per_m, "Stiffness holding each vertex to the handle."),
+  }), [](const Node& node, Interaction& g, const std::string& path, const Context&) {
+    for (std::size_t i = 1; i < g.path.size(); ++i)
+      if (g.path[i].time_s <= g.path[i - 1].time_s)
+        fail(node.find("path")->items[i].origin, path + ".path[" + std::to_string(i) + "].time", "path times must increase");
+  });
+  return map<Interaction>({
+      field<Interaction, Interaction>("poke", poke, [](Interaction& i) -> Interaction& { i.kind = InteractionKind::kPoke; return i; },
+            "Push the vertices near `at` with `force` from `start` for `duration`."),
+      field<Interaction, Interaction>("grab", grab, [](Interaction& i) -> Interaction& { i.kind = InteractionKind::kGrab; return i; },
+            "Drag the vertices near `at` along `path`, then let go."),
+  }, [](const Node& node, Interaction& i, const std::string& path, const Context&) {
+    if (node.entries.size() != 1)
+      fail(node.origin, path, "an interaction has exactly one of poke, grab; got " + std::to_string(node.entries.size()) + " keys");
+    i.origin = node.origin;
+  });
+}
+
+ValueSpec<Floor> floor_spec() {
+  return map<Floor>({
+      field("point", vec3(Dimension::kLength), &Floor::point_m, "A point on the plane."),
+      field("normal", direction(), &Floor::normal, "Points to the free side (normalised on reading)."),
+  }, [](const Node&, Floor& f, const std::string&, const Context&) {
+    f.enabled = true;
+    f.normal.normalize();
+  });
 }
 
 ValueSpec<Camera> camera_spec() {
@@ -622,12 +673,19 @@ ValueSpec<Scene> scene_spec() {
       field("seed", whole<std::uint64_t>(0, std::numeric_limits<std::int64_t>::max()), &Scene::seed, "Seeds every random choice (irregular rhythms, tuning)."),
       field("gravity", vec3(Dimension::kAcceleration), &Scene::gravity, "Gravity acceleration."),
       field("organs", list(organ_spec(), 1, 64, "list of organs"), &Scene::organs, "The soft bodies in the scene.").required(),
+      field("interactions", list(interaction_spec(), 0, 256, "list of interactions"), &Scene::interactions, "Scripted pokes and grabs on the timeline."),
+      field("floor", floor_spec(), &Scene::floor, "A plane the organs cannot pass through.").shown_default("none"),
       field("solver", solver_spec(), &Scene::solver, "Time integration."),
       field("camera", camera_spec(), &Scene::camera, "The view."),
       field("lights", list(light, 1, 8, "list of lights"), &Scene::lights, "Directional lights.").shown_default("a warm key and a cool fill"),
       field("output", output_spec(), &Scene::output, "The video file."),
   }, [](const Node& node, Scene& s, const std::string&, const Context&) {
     if (!node.find("lights")) s.lights = default_lights();
+    for (std::size_t i = 0; i < s.interactions.size(); ++i) {
+      const auto& name = s.interactions[i].organ;
+      if (std::none_of(s.organs.begin(), s.organs.end(), [&](const Organ& o) { return o.name == name; }))
+        fail(s.interactions[i].origin, "interactions[" + std::to_string(i) + "]", "no organ is named '" + name + "'");
+    }
     for (std::size_t i = 0; i < s.organs.size(); ++i)
       for (std::size_t j = 0; j < i; ++j)
         if (s.organs[i].name == s.organs[j].name)

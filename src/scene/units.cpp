@@ -44,7 +44,7 @@ std::optional<double> take_number(std::string_view& text) {
   return value;
 }
 
-const std::array<DimensionInfo, 10> kDimensions = {{
+const std::array<DimensionInfo, 11> kDimensions = {{
     {"number", {}, false, R"("0.5")"},
     {"length", {{"m", 1}, {"cm", 0.01}, {"mm", 0.001}}, false, R"("2 cm" or "0.02 m")"},
     {"mass", {{"kg", 1}, {"g", 0.001}}, false, R"("300 g" or "0.3 kg")"},
@@ -55,6 +55,7 @@ const std::array<DimensionInfo, 10> kDimensions = {{
     {"pressure", {{"Pa", 1}, {"kPa", 1000}}, false, R"("20 kPa" or "20000 Pa")"},
     {"rate", {{"1/s", 1}}, false, R"("1 1/s")"},
     {"acceleration", {{"m/s^2", 1}}, false, R"("-9.81 m/s^2")"},
+    {"force", {{"N", 1}}, false, R"("2 N")"},
 }};
 
 std::string expectation(const DimensionInfo& d) {

@@ -23,6 +23,7 @@ enum class Dimension {
   kPressure,      ///< Pa, kPa; a bare number is Pa.
   kRate,          ///< 1/s; a bare number is 1/s.
   kAcceleration,  ///< m/s^2; a bare number is m/s^2.
+  kForce,         ///< N; a bare number is newtons.
 };
 
 struct Unit {
