@@ -1,7 +1,6 @@
 #include "mesh/weld.h"
 
 #include <cmath>
-#include <Eigen/Geometry>
 #include <cstdint>
 #include <limits>
 #include <unordered_map>

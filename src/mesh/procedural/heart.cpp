@@ -65,7 +65,7 @@ struct HeartFrame {
 
 // The centre the mesher casts its rays from: every part of the field is star-shaped
 // about it, so the vessels point away from it and the bumps are shallow.
-const Vec kCenter(-0.002, 0.018, -0.004);
+const Vec kCenter(0.000, 0.012, 0.000);
 
 // A vessel stub along the ray from the centre towards `end`, from `from` (a fraction of
 // the way, inside the body) to `end`.
@@ -80,22 +80,22 @@ Field heart_field(const HeartFrame& h) {
   // Left ventricle: a blunt cone ending in the apex.
   p.push_back(round_cone(kLeftVentricle, h.at(0.014, 0.010, -0.008), 0.032, h.at(0.068, 0.004, 0.000), 0.013, 0));
   // Right ventricle: a flatter, shorter body wrapped over the front and right.
-  p.push_back(ellipsoid(kRightVentricle, h.at(0.024, -0.014, 0.012), ventricle_axes, Vec(0.040, 0.030, 0.020), 0.007));
+  p.push_back(ellipsoid(kRightVentricle, h.at(0.024, -0.014, 0.012), ventricle_axes, Vec(0.040, 0.030, 0.020), 0.010));
   // Atria behind and above the base; a small blend leaves the atrioventricular groove.
-  p.push_back(ellipsoid(kLeftAtrium, Vec(0.008, 0.036, -0.026), Eigen::Matrix3d::Identity(), Vec(0.030, 0.019, 0.022), 0.008));
-  p.push_back(ellipsoid(kRightAtrium, Vec(-0.032, 0.028, -0.006), Eigen::Matrix3d::Identity(), Vec(0.021, 0.026, 0.025), 0.008));
+  p.push_back(ellipsoid(kLeftAtrium, Vec(0.008, 0.036, -0.026), Eigen::Matrix3d::Identity(), Vec(0.030, 0.019, 0.022), 0.014));
+  p.push_back(ellipsoid(kRightAtrium, Vec(-0.032, 0.028, -0.006), Eigen::Matrix3d::Identity(), Vec(0.021, 0.026, 0.025), 0.012));
   // Auricles: ear-like bumps pointing away from the centre around the great arteries.
   const Vec left_auricle(0.034, 0.036, 0.004), right_auricle(-0.022, 0.042, 0.018);
   p.push_back(ellipsoid(kLeftAtrium, left_auricle, axes_along(left_auricle - kCenter, Vec::UnitY()),
                         Vec(0.014, 0.010, 0.008), 0.008));
   p.push_back(ellipsoid(kRightAtrium, right_auricle, axes_along(right_auricle - kCenter, Vec::UnitY()),
-                        Vec(0.014, 0.010, 0.009), 0.008));
+                        Vec(0.014, 0.010, 0.009), 0.016));
   // Great vessels, cut off as stubs: the pulmonary trunk in front and to the left of
   // the aorta, the venae cavae entering the right atrium from above and below.
-  p.push_back(radial_vessel(kAorta, Vec(-0.006, 0.080, -0.010), 0.3, 0.0145, 0.0135, 0.010));
-  p.push_back(radial_vessel(kPulmonaryTrunk, Vec(0.024, 0.074, 0.012), 0.3, 0.0140, 0.0125, 0.010));
-  p.push_back(radial_vessel(kSuperiorVenaCava, Vec(-0.036, 0.076, -0.010), 0.4, 0.0105, 0.0100, 0.008));
-  p.push_back(radial_vessel(kInferiorVenaCava, Vec(-0.034, -0.020, -0.018), 0.4, 0.0120, 0.0115, 0.008));
+  p.push_back(radial_vessel(kAorta, Vec(-0.008, 0.084, -0.006), 0.3, 0.0145, 0.0135, 0.010));
+  p.push_back(radial_vessel(kPulmonaryTrunk, Vec(0.013, 0.078, 0.011), 0.3, 0.0140, 0.0125, 0.010));
+  p.push_back(radial_vessel(kSuperiorVenaCava, Vec(-0.033, 0.076, -0.011), 0.4, 0.0105, 0.0100, 0.008));
+  p.push_back(radial_vessel(kInferiorVenaCava, Vec(-0.030, -0.012, -0.026), 0.4, 0.0120, 0.0115, 0.008));
   return field;
 }
 

@@ -4,8 +4,6 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <iterator>
 #include <map>
 #include <utility>
@@ -89,7 +87,7 @@ class RaySurface {
   double cast(const Vec& u, double hint) const {
     double outside = radius_;
     if (hint > 0) {  // Start just outside the hint if that is outside the surface.
-      const double t = std::min(radius_, hint * 1.2 + 1e-4);
+      const double t = std::min(radius_, hint * 1.03 + radius_ * 1e-3);
       if (field_.distance(at(u, t)) > 0) outside = t;
     }
     // Sphere tracing inwards: the field hardly overstates the distance, so steps of 0.8 d
@@ -467,25 +465,12 @@ TriangleMesh mesh_implicit_surface(const Field& field, const MesherSettings& set
   // Target edge length from the area: an equilateral triangle of side L has area sqrt(3)/4 L^2.
   const double area = surface_area(V.pos, F);
   const double length = std::sqrt(4.0 * area / (std::sqrt(3.0) * settings.target_triangles));
-  const int iterations = std::getenv("MESHER_ITER") ? std::atoi(std::getenv("MESHER_ITER")) : settings.iterations;
-  for (int iteration = 0; iteration < iterations; ++iteration) {
-    int splits = 0;
-    for (int pass = 0; pass < 6; ++pass) {
-      const int k = split_long_edges(surface, V, F, 4.0 / 3.0 * length);
-      splits += k;
-      if (k == 0) break;
+  for (int iteration = 0; iteration < settings.iterations; ++iteration) {
+    for (int pass = 0; pass < 6 && split_long_edges(surface, V, F, 4.0 / 3.0 * length) > 0; ++pass) {
     }
-    const int collapses = collapse_short_edges(surface, V, F, 0.8 * length, 4.0 / 3.0 * length);
-    const int flips = flip_edges(V, F);
+    collapse_short_edges(surface, V, F, 0.8 * length, 4.0 / 3.0 * length);
+    flip_edges(V, F);
     relax(surface, settings.center, V, F, 0.8);
-    if (std::getenv("MESHER_DEBUG")) {
-      double longest = 0;
-      for (const Face& f : F) {
-        for (int k = 0; k < 3; ++k) longest = std::max(longest, (V.pos[f[k]] - V.pos[f[(k + 1) % 3]]).norm());
-      }
-      std::fprintf(stderr, "it %d: L %.4f longest %.4f, %zu faces, %d splits %d collapses %d flips\n", iteration,
-                   length, longest, F.size(), splits, collapses, flips);
-    }
   }
   flip_edges(V, F);
   relax(surface, settings.center, V, F, 0.5);

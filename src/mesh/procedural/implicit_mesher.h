@@ -1,12 +1,15 @@
 #pragma once
 // Meshing an implicit surface into a closed, manifold, well-shaped triangle mesh.
 //
-// A subdivided icosahedron is cast onto the surface along rays from a centre (a closed
-// genus-0 start, whatever the shape), then isotropic remeshing (Botsch & Kobbelt 2004,
-// "A remeshing approach to multiresolution modeling"): split long edges, collapse short
-// ones under the link condition, flip edges towards valence 6, relax tangentially and
-// project back onto the surface. Every step keeps the mesh closed and manifold; all of it
-// runs on one thread in a fixed order, so the result is deterministic.
+// The surface must be star-shaped about a centre: every ray from the centre leaves it
+// once. Each vertex is then a direction plus the distance where its ray leaves the
+// surface, so the mesh is a triangulation of the sphere carried onto the surface; as
+// long as every spherical triangle keeps its orientation the result is embedded, closed
+// and outward-facing, whatever the remeshing does. A subdivided icosahedron starts it;
+// isotropic remeshing (Botsch & Kobbelt 2004, "A remeshing approach to multiresolution
+// modeling") then splits long edges, collapses short ones under the link condition, flips
+// edges towards valence 6 and relaxes vertices towards their area-weighted centroids,
+// all measured on the surface. One thread, fixed order: deterministic.
 
 #include <Eigen/Core>
 
@@ -16,7 +19,7 @@
 namespace systole::mesh::procedural {
 
 struct MesherSettings {
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< Inside the surface; rays start here. unit: m
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< The surface is star-shaped about it. unit: m
   double bound_radius = 0.2;   ///< The whole surface lies within this distance of `center`. unit: m
   int target_triangles = 5000;  ///< About how many triangles the result has.
   int iterations = 8;           ///< Remeshing rounds.
