@@ -18,7 +18,16 @@ World build_world(const scene::Scene& scene) {
   for (const auto& organ : scene.organs) {
     OrganBody body;
     body.geometry = mesh::build_organ_geometry(organ);
-    body.model = sim::build_model(organ, body.geometry, scene.solver, scene.gravity, scene.output.duration_s);
+    sim::ModelOptions options;
+    options.solver = scene.solver;
+    options.dt_s = w.dt_s;
+    options.gravity = scene.gravity;
+    options.clip_s = scene.output.duration_s;
+    options.floor = scene.floor;
+    for (const auto& in : scene.interactions) {
+      if (in.organ == organ.name) options.interactions.push_back(in);
+    }
+    body.model = sim::build_model(organ, body.geometry, options);
     body.state = sim::initial_state(body.model);
     w.organs.push_back(std::move(body));
   }

@@ -78,6 +78,13 @@ double activation(const scene::Drive& drive, double t_s, double ramp_s) {
   return waveform_value(drive, u);
 }
 
+void region_contractions(const std::vector<scene::Region>& regions, double t_s, double ramp_s, Eigen::VectorXd& out) {
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const auto& d = regions[r].drive;
+    out[static_cast<Eigen::Index>(r)] = d.amplitude * activation(d, t_s, ramp_s);
+  }
+}
+
 double highest_frequency_hz(const scene::Drive& drive) {
   using scene::Waveform;
   const double rate = std::max(drive.rate_hz, drive.rate_end_hz);

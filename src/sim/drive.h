@@ -3,6 +3,9 @@
 // the rest lengths L(t) = L0 * (1 - amplitude * phi(t - delay)) of a region's springs
 // (Kenwright & Sinmai, "Lightweight Self-Driven Deformable Organ Animations", §3).
 
+#include <Eigen/Core>
+#include <vector>
+
 #include "scene/scene.h"
 
 namespace systole::sim {
@@ -17,6 +20,10 @@ double waveform_value(const scene::Drive& drive, double u);
 /// The activation phi at time t_s (delay applied; before the delay the region is at rest
 /// phase 0). `ramp_s` is the clip length over which a rate ramp runs.
 double activation(const scene::Drive& drive, double t_s, double ramp_s);
+
+/// Rest-length contraction of every region at time t: amplitude * phi(t), into `out`
+/// (sized to the region count).
+void region_contractions(const std::vector<scene::Region>& regions, double t_s, double ramp_s, Eigen::VectorXd& out);
 
 /// Highest frequency present in the drive at any time: rate x highest harmonic, or the
 /// sharpest template's equivalent. unit: Hz

@@ -5,6 +5,7 @@
 #include <map>
 #include <numeric>
 
+#include "common/error.h"
 #include "sim/graph_coloring.h"
 
 namespace systole::sim {
@@ -44,6 +45,63 @@ Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen
   return mass;
 }
 
+/// For each edge shared by exactly two triangles, the two corners opposite it: a spring
+/// between them resists folding about the edge (a cheap bending model that works the same
+/// in every solver, unlike dihedral-angle constraints).
+std::vector<std::pair<int, int>> opposite_corners(const std::vector<Eigen::Vector3i>& triangles) {
+  std::map<std::pair<int, int>, std::vector<int>> across;
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int i = t[k], j = t[(k + 1) % 3];
+      across[{std::min(i, j), std::max(i, j)}].push_back(t[(k + 2) % 3]);
+    }
+  }
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& [edge, corners] : across) {
+    if (corners.size() != 2 || corners[0] == corners[1]) continue;  // Boundary or non-manifold: no hinge.
+    pairs.emplace_back(std::min(corners[0], corners[1]), std::max(corners[0], corners[1]));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+/// The particles within `radius` of `centre`, in index order.
+std::vector<int> particles_near(const Eigen::Matrix3Xd& x, const Eigen::Vector3d& centre, double radius) {
+  std::vector<int> found;
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    if ((x.col(i) - centre).norm() <= radius) found.push_back(static_cast<int>(i));
+  }
+  return found;
+}
+
+void add_interactions(Model& m, const std::vector<scene::Interaction>& interactions) {
+  for (const auto& in : interactions) {
+    std::vector<int> patch = particles_near(m.rest_positions, in.at_m, in.radius_m);
+    if (patch.empty()) {
+      throw Error(ExitCode::kDataError,
+                  in.origin.file + ":" + std::to_string(in.origin.line) + ":" + std::to_string(in.origin.column) +
+                      ": interaction on '" + m.name + "' touches no vertex: nothing of the organ lies within " +
+                      std::to_string(in.radius_m) + " m of `at`; move `at` onto the surface or raise `radius`");
+    }
+    if (in.kind == scene::InteractionKind::kPoke) {
+      Poke p;
+      p.force_per_particle_N = in.force_N / double(patch.size());
+      p.particles = std::move(patch);
+      p.start_s = in.start_s;
+      p.end_s = in.start_s + in.duration_s;
+      m.pokes.push_back(std::move(p));
+    } else {
+      Grab g;
+      for (int i : patch) g.offsets_m.push_back(m.rest_positions.col(i) - in.path.front().position_m);
+      g.particles = std::move(patch);
+      g.path = in.path;
+      g.compliance_m_per_N = 1.0 / in.stiffness_N_per_m;
+      m.grabs.push_back(std::move(g));
+    }
+  }
+}
+
 }  // namespace
 
 double enclosed_volume(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles) {
@@ -52,16 +110,16 @@ double enclosed_volume(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vecto
   return six_v / 6.0;
 }
 
-Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry, const scene::Solver& solver,
-                  const Eigen::Vector3d& gravity, double clip_s) {
+Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options) {
   const auto& surface = geometry.mesh.surface;
   Model m;
   m.name = organ.name;
-  m.method = solver.method;
-  m.substeps = solver.substeps;
-  m.gravity = gravity;
+  m.method = options.solver.method;
+  m.substeps = options.solver.substeps;
+  m.gravity = options.gravity;
   m.drag_per_s = organ.body.drag_per_s;
-  m.ramp_s = clip_s;
+  m.ramp_s = options.clip_s;
+  m.floor = options.floor;
   m.regions = organ.regions;
   m.vertex_region = geometry.vertex_region;
 
@@ -80,12 +138,20 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
     if (r >= 0 && m.regions[r].pinned) m.inverse_mass[i] = 0;
   }
 
-  // Springs on every surface edge; a spring between two pinned particles does nothing.
+  // Springs on every surface edge, then (when asked for) bending springs across every
+  // interior edge; a spring between two pinned particles does nothing and is not built.
   std::vector<int> a, b;
-  for (const auto& [i, j] : unique_edges(surface.triangles)) {
-    if (m.inverse_mass[i] == 0 && m.inverse_mass[j] == 0) continue;
+  std::vector<double> stiffness;
+  auto add = [&](int i, int j, double k) {
+    if (m.inverse_mass[i] == 0 && m.inverse_mass[j] == 0) return false;
     a.push_back(i);
     b.push_back(j);
+    stiffness.push_back(k);
+    return true;
+  };
+  for (const auto& [i, j] : unique_edges(surface.triangles)) m.springs.stretch_count += add(i, j, organ.body.stiffness_N_per_m);
+  if (organ.body.bending_N_per_m > 0) {
+    for (const auto& [i, j] : opposite_corners(surface.triangles)) m.springs.bending_count += add(i, j, organ.body.bending_N_per_m);
   }
   const std::vector<int> color = color_pairs(a, b, n);
   const int colors = a.empty() ? 0 : *std::max_element(color.begin(), color.end()) + 1;
@@ -110,7 +176,7 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
     s.a.push_back(i);
     s.b.push_back(j);
     s.rest_m.push_back((m.rest_positions.col(i) - m.rest_positions.col(j)).norm());
-    s.compliance_m_per_N.push_back(1.0 / (organ.body.stiffness_N_per_m * stiffness_scale));
+    s.compliance_m_per_N.push_back(1.0 / (stiffness[idx] * stiffness_scale));
     s.damping_s.push_back(organ.body.damping_s * damping_scale);
     s.region_a.push_back(ri);
     s.region_b.push_back(rj);
@@ -123,6 +189,7 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
     m.volume.rest_m3 = enclosed_volume(m.rest_positions, surface.triangles);
     m.volume.compliance_m5_per_N = m.volume.rest_m3 / organ.body.volume_stiffness_Pa;
   }
+  add_interactions(m, options.interactions);
   return m;
 }
 

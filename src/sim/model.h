@@ -22,6 +22,8 @@ struct Springs {
   std::vector<double> damping_s;         ///< Stiffness-proportional damping time. unit: s
   std::vector<int> region_a, region_b;   ///< Drive region of each end (-1: undriven).
   std::vector<int> color_begin;          ///< Springs of colour c: [color_begin[c], color_begin[c+1]).
+  int stretch_count = 0;                 ///< Springs on surface edges.
+  int bending_count = 0;                 ///< Springs across edges (between the two opposite corners).
 
   int size() const { return static_cast<int>(a.size()); }
   int colors() const { return static_cast<int>(color_begin.size()) - 1; }
@@ -33,6 +35,33 @@ struct VolumeConstraint {
   std::vector<Eigen::Vector3i> triangles;  ///< The closed surface, outward CCW.
   double rest_m3 = 0;                      ///< unit: m^3
   double compliance_m5_per_N = 0;          ///< V0 / bulk modulus, for C = V - V0. unit: m^5/N
+};
+
+/// A scripted push: a force spread over a patch of particles during [start_s, end_s).
+struct Poke {
+  std::vector<int> particles;
+  Eigen::Vector3d force_per_particle_N = Eigen::Vector3d::Zero();  ///< unit: N
+  double start_s = 0;  ///< unit: s
+  double end_s = 0;    ///< unit: s
+};
+
+/// A patch of particles held by stiff zero-length springs to a handle that moves along a
+/// path; active from the first key's time to the last's, then let go.
+struct Grab {
+  std::vector<int> particles;
+  std::vector<Eigen::Vector3d> offsets_m;  ///< Each particle's rest offset from the handle. unit: m
+  std::vector<scene::PathKey> path;
+  double compliance_m_per_N = 0;           ///< unit: m/N
+};
+
+/// What a model is built with besides the organ: the scene's solver, world and timeline.
+struct ModelOptions {
+  scene::Solver solver;
+  double dt_s = 1.0 / 240.0;  ///< The step the solver will be called with (auto dt resolved). unit: s
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< unit: m/s^2
+  double clip_s = 0;          ///< The clip's length: rate ramps span it. unit: s
+  std::vector<scene::Interaction> interactions;  ///< Those touching this organ.
+  scene::Floor floor;
 };
 
 struct Model {
@@ -49,13 +78,16 @@ struct Model {
   double drag_per_s = 0;                    ///< unit: 1/s
   double ramp_s = 0;                        ///< Length of the clip, over which rate ramps run. unit: s
   double rest_extent_m = 0;                 ///< Bounding-box diagonal of the rest shape. unit: m
+  std::vector<Poke> pokes;
+  std::vector<Grab> grabs;
+  scene::Floor floor;
 
   int particle_count() const { return static_cast<int>(rest_positions.cols()); }
 };
 
-/// Builds the body of one organ. `clip_s` is the clip's duration (rate ramps span it).
-Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry, const scene::Solver& solver,
-                  const Eigen::Vector3d& gravity, double clip_s);
+/// Builds the body of one organ. Throws Error(kDataError) when an interaction touches no
+/// particle (naming it and where it was written).
+Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options);
 
 /// Enclosed volume of a closed, outward-oriented triangle surface (divergence theorem).
 double enclosed_volume(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles);

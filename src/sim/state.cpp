@@ -11,6 +11,7 @@ State initial_state(const Model& model) {
   s.x_prev = s.x;
   s.region_contraction = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.regions.size()));
   s.volume_gradient = Eigen::Matrix3Xd::Zero(3, model.volume.enabled ? n : 0);
+  s.force = Eigen::Matrix3Xd::Zero(3, n);
   return s;
 }
 

@@ -20,6 +20,7 @@ struct State {
   Eigen::Matrix3Xd x_prev;           ///< Positions at the start of the substep. unit: m
   Eigen::VectorXd region_contraction;  ///< amplitude * phi per region at the current substep. unit: 1
   Eigen::Matrix3Xd volume_gradient;  ///< dV/dx per particle. unit: m^2
+  Eigen::Matrix3Xd force;            ///< Force per particle (explicit and implicit solvers). unit: N
 };
 
 /// The body at rest at t = 0.

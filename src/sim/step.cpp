@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "sim/explicit_euler.h"
 #include "sim/xpbd.h"
 
 namespace systole::sim {
@@ -14,6 +15,8 @@ void step(const Model& model, State& state, double dt_s) {
       xpbd_step(model, state, dt_s);
       return;
     case scene::SolverMethod::kExplicit:
+      explicit_step(model, state, dt_s);
+      return;
     case scene::SolverMethod::kImplicit:
       break;
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/drive.h"
+#include "sim/interactions.h"
 
 namespace systole::sim {
 
@@ -29,14 +30,6 @@ double solve_distance(double* xa, double* xb, const double* da, const double* db
 }
 
 namespace {
-
-/// Rest-length contraction of every region at time t: amplitude * phi(t).
-void update_region_contraction(const Model& model, double t_s, Eigen::VectorXd& out) {
-  for (std::size_t r = 0; r < model.regions.size(); ++r) {
-    const auto& d = model.regions[r].drive;
-    out[static_cast<Eigen::Index>(r)] = d.amplitude * activation(d, t_s, model.ramp_s);
-  }
-}
 
 void solve_springs(const Model& model, State& s, double h) {
   const Springs& sp = model.springs;
@@ -86,6 +79,23 @@ void solve_volume(const Model& model, State& s, double h) {
   for (Eigen::Index i = 0; i < s.x.cols(); ++i) s.x.col(i) += model.inverse_mass[i] * dlambda * g.col(i);
 }
 
+/// Grabs as zero-length attachments to moving targets (XPBD eq. 18 with the target's
+/// inverse mass 0).
+void solve_grabs(const Model& model, State& s, double t, double h) {
+  const double no_motion[3] = {0, 0, 0};
+  for (const Grab& g : model.grabs) {
+    if (!grab_active(g, t)) continue;
+    const Eigen::Vector3d handle = handle_position(g, t);
+    const double alpha_tilde = g.compliance_m_per_N / (h * h);
+    for (std::size_t k = 0; k < g.particles.size(); ++k) {
+      const int i = g.particles[k];
+      Eigen::Vector3d target = handle + g.offsets_m[k];
+      solve_distance(target.data(), s.x.col(i).data(), no_motion, no_motion, 0.0, model.inverse_mass[i], 0.0,
+                     alpha_tilde, 0.0);
+    }
+  }
+}
+
 }  // namespace
 
 void xpbd_step(const Model& model, State& s, double dt_s) {
@@ -99,13 +109,19 @@ void xpbd_step(const Model& model, State& s, double dt_s) {
       if (model.inverse_mass[i] == 0) continue;
       s.v.col(i) = drag * (s.v.col(i) + h * model.gravity);
     }
+    for (const Poke& p : model.pokes) {
+      if (!poke_active(p, s.time_s)) continue;
+      for (int i : p.particles) s.v.col(i) += h * model.inverse_mass[i] * p.force_per_particle_N;
+    }
     s.x_prev = s.x;
     s.x += h * s.v;
-    update_region_contraction(model, t_end, s.region_contraction);
+    region_contractions(model.regions, t_end, model.ramp_s, s.region_contraction);
     s.spring_lambda.setZero();
     s.volume_lambda = 0;
     solve_springs(model, s, h);
     solve_volume(model, s, h);
+    solve_grabs(model, s, t_end, h);
+    resolve_floor_contact(model, s.x);
     s.v = (s.x - s.x_prev) / h;
     s.time_s = t_end;
   }

@@ -31,7 +31,12 @@ struct Ball {
     top.drive.amplitude = amplitude;
     organ.regions.push_back(top);
   }
-  Model model() const { return build_model(organ, geometry, solver, Eigen::Vector3d::Zero(), 10.0); }
+  Model model() const {
+    ModelOptions options;
+    options.solver = solver;
+    options.clip_s = 10.0;
+    return build_model(organ, geometry, options);
+  }
 };
 
 /// Volume after each of `steps` steps.

@@ -1,0 +1,54 @@
+#include "sim/forces.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "sim/interactions.h"
+
+namespace systole::sim {
+
+void internal_and_scripted_forces(const Model& model, const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v,
+                                  double t, State& state, Eigen::Matrix3Xd& f) {
+  f.setZero();
+  const Springs& sp = model.springs;
+  for (int j = 0; j < sp.size(); ++j) {
+    const int a = sp.a[j], b = sp.b[j];
+    const Eigen::Vector3d d = x.col(b) - x.col(a);
+    const double len = d.norm();
+    if (len < 1e-12) continue;
+    const Eigen::Vector3d n = d / len;
+    const double k = 1.0 / sp.compliance_m_per_N[j];
+    const double c = k * sp.damping_s[j];
+    // Hooke spring plus a damper along the spring: it resists stretching speed only.
+    const double tension = k * (len - driven_rest_length(sp, j, state.region_contraction)) + c * n.dot(v.col(b) - v.col(a));
+    f.col(a) += tension * n;
+    f.col(b) -= tension * n;
+  }
+  if (model.volume.enabled) {
+    // Pressure from the volume energy E = (K / 2V0) (V - V0)^2: f = -(V - V0) / compliance * dV/dx.
+    double six_v = 0;
+    for (const auto& t3 : model.volume.triangles) six_v += x.col(t3[0]).dot(x.col(t3[1]).cross(x.col(t3[2])));
+    const double pressure = -(six_v / 6.0 - model.volume.rest_m3) / model.volume.compliance_m5_per_N;
+    for (const auto& t3 : model.volume.triangles) {
+      const auto p0 = x.col(t3[0]), p1 = x.col(t3[1]), p2 = x.col(t3[2]);
+      f.col(t3[0]) += pressure / 6.0 * p1.cross(p2);
+      f.col(t3[1]) += pressure / 6.0 * p2.cross(p0);
+      f.col(t3[2]) += pressure / 6.0 * p0.cross(p1);
+    }
+  }
+  for (const Poke& p : model.pokes) {
+    if (!poke_active(p, t)) continue;
+    for (int i : p.particles) f.col(i) += p.force_per_particle_N;
+  }
+  for (const Grab& g : model.grabs) {
+    if (!grab_active(g, t)) continue;
+    const Eigen::Vector3d handle = handle_position(g, t);
+    const double k = 1.0 / g.compliance_m_per_N;
+    for (std::size_t m = 0; m < g.particles.size(); ++m) {
+      const int i = g.particles[m];
+      f.col(i) += k * (handle + g.offsets_m[m] - x.col(i));
+    }
+  }
+}
+
+}  // namespace systole::sim

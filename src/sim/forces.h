@@ -1,0 +1,27 @@
+#pragma once
+// The forces of the mass-spring-damper body (Kenwright & Sinmai §3): what the explicit
+// and implicit solvers integrate. XPBD works on the same springs as constraints instead.
+
+#include <Eigen/Core>
+
+#include "sim/model.h"
+#include "sim/state.h"
+
+namespace systole::sim {
+
+/// Rest length of spring j given the regions' current contraction: the mean of its two
+/// ends' contraction shortens it. unit: m
+inline double driven_rest_length(const Springs& sp, int j, const Eigen::VectorXd& contraction) {
+  const double ca = sp.region_a[j] >= 0 ? contraction[sp.region_a[j]] : 0.0;
+  const double cb = sp.region_b[j] >= 0 ? contraction[sp.region_b[j]] : 0.0;
+  return sp.rest_m[j] * (1.0 - 0.5 * (ca + cb));
+}
+
+/// Force on every particle at positions x, velocities v and time t (regions' contraction
+/// already in state.region_contraction): springs with stiffness-proportional damping, the
+/// volume pressure, active pokes and grabs. Gravity and drag are not included (they act on
+/// velocities directly). Deterministic: accumulated in spring order. unit: N
+void internal_and_scripted_forces(const Model& model, const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v,
+                                  double t_s, State& state, Eigen::Matrix3Xd& force);
+
+}  // namespace systole::sim

@@ -1,0 +1,34 @@
+#include "sim/interactions.h"
+
+#include <algorithm>
+
+namespace systole::sim {
+
+Eigen::Vector3d handle_position(const Grab& grab, double t) {
+  const auto& p = grab.path;
+  if (p.size() == 1 || t <= p.front().time_s) return p.front().position_m;
+  if (t >= p.back().time_s) return p.back().position_m;
+  const auto next = std::upper_bound(p.begin(), p.end(), t, [](double v, const scene::PathKey& k) { return v < k.time_s; });
+  const std::size_t i = static_cast<std::size_t>(next - p.begin()) - 1;
+  const double u = (t - p[i].time_s) / (p[i + 1].time_s - p[i].time_s);
+  // Catmull-Rom with end keys repeated (Catmull & Rom 1974).
+  const Eigen::Vector3d& p0 = p[i == 0 ? 0 : i - 1].position_m;
+  const Eigen::Vector3d& p1 = p[i].position_m;
+  const Eigen::Vector3d& p2 = p[i + 1].position_m;
+  const Eigen::Vector3d& p3 = p[std::min(i + 2, p.size() - 1)].position_m;
+  return 0.5 * ((2 * p1) + (-p0 + p2) * u + (2 * p0 - 5 * p1 + 4 * p2 - p3) * u * u + (-p0 + 3 * p1 - 3 * p2 + p3) * u * u * u);
+}
+
+bool grab_active(const Grab& grab, double t) { return t >= grab.path.front().time_s && t <= grab.path.back().time_s; }
+
+void resolve_floor_contact(const Model& model, Eigen::Matrix3Xd& x) {
+  if (!model.floor.enabled) return;
+  const Eigen::Vector3d& n = model.floor.normal;
+  const Eigen::Vector3d& p = model.floor.point_m;
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    const double depth = (x.col(i) - p).dot(n);
+    if (depth < 0) x.col(i) -= depth * n;
+  }
+}
+
+}  // namespace systole::sim
