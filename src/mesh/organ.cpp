@@ -14,15 +14,19 @@ namespace {
 std::string where(const scene::Origin& origin) {
   if (origin.file.empty()) return "";
   std::string text = origin.file;
-  if (origin.line > 0) text += ":" + std::to_string(origin.line);
-  if (origin.column > 0) text += ":" + std::to_string(origin.column);
-  return text + ": ";
+  // Appends one piece at a time (GCC 12 warns falsely on "literal" + std::string).
+  if (origin.line > 0) text.append(":").append(std::to_string(origin.line));
+  if (origin.column > 0) text.append(":").append(std::to_string(origin.column));
+  return text.append(": ");
 }
 
 std::string part_list(const OrganMesh& mesh) {
   if (mesh.part_names.empty()) return "the mesh has no named parts";
   std::string text = "available parts: ";
-  for (size_t i = 0; i < mesh.part_names.size(); ++i) text += (i ? ", " : "") + mesh.part_names[i];
+  for (size_t i = 0; i < mesh.part_names.size(); ++i) {
+    if (i > 0) text += ", ";
+    text += mesh.part_names[i];
+  }
   return text;
 }
 
