@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <sstream>
 
+#include "app/renderer_key.h"
 #include "encode/versions.h"
 #include "render/renderer.h"
 
@@ -24,6 +25,7 @@ std::string system_info() {
   s << "gl renderer " << gl.renderer << "\n";
   s << "gl version " << gl.version << "\n";
   s << "glsl version " << gl.glsl_version << "\n";
+  s << "golden key " << renderer_key(gl) << "\n";
   return s.str();
 }
 

@@ -3,10 +3,13 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <numeric>
 #include <vector>
 
+#include "app/frame_list.h"
 #include "app/progress.h"
 #include "app/world.h"
+#include "common/error.h"
 #include "encode/mp4_writer.h"
 #include "encode/png.h"
 #include "mesh/normals.h"
@@ -34,6 +37,31 @@ struct SurfaceBuffers {
   std::vector<float> positions, normals;
 };
 
+/// The frames to render: the request's list checked against the clip, or every frame.
+std::vector<int> selected_frames(const RenderRequest& request, int frame_count) {
+  if (request.frames.empty()) {
+    std::vector<int> all(frame_count);
+    std::iota(all.begin(), all.end(), 0);
+    return all;
+  }
+  for (std::size_t i = 0; i < request.frames.size(); ++i) {
+    const int f = request.frames[i];
+    if (f < 0 || f >= frame_count) {
+      throw Error(ExitCode::kUsage, "frame " + std::to_string(f) + " is outside the clip: it has " +
+                                        std::to_string(frame_count) + " frames (0.." +
+                                        std::to_string(frame_count - 1) + ")");
+    }
+    if (i > 0 && f <= request.frames[i - 1]) {
+      throw Error(ExitCode::kUsage, "the frame list must be sorted and without duplicates");
+    }
+  }
+  if (!request.video.empty() && !is_contiguous(request.frames)) {
+    throw Error(ExitCode::kUsage,
+                "a video needs consecutive frames (a range such as 10..20); write other selections as PNG frames");
+  }
+  return request.frames;
+}
+
 }  // namespace
 
 std::filesystem::path default_video_path(const scene::Scene& scene) {
@@ -44,8 +72,10 @@ std::filesystem::path default_video_path(const scene::Scene& scene) {
 StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) {
   const auto start = Clock::now();
   StageTimes times;
-  World world = build_world(scene);
   const auto& out = scene.output;
+  const int frame_count = out.frame_count();
+  const std::vector<int> frames = selected_frames(request, frame_count);
+  World world = build_world(scene);
   render::Renderer renderer(out.width, out.height, out.antialias);
 
   std::vector<SurfaceBuffers> surfaces(world.organs.size());
@@ -60,7 +90,6 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
 
   // Sinks are opened before the first frame so a bad output path fails before any work.
   std::vector<std::unique_ptr<encode::FrameSink>> sinks;
-  const int frame_count = out.frame_count();
   if (!request.video.empty()) {
     encode::VideoSettings video{out.width, out.height, out.fps, out.crf, out.preset, 0};
     sinks.push_back(std::make_unique<encode::Mp4Writer>(request.video, video));
@@ -70,10 +99,10 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
   }
 
   Image frame(out.width, out.height);
-  Progress progress(scene.name, frame_count, request.show_progress);
-  for (int f = 0; f < frame_count; ++f) {
+  Progress progress(scene.name, static_cast<int>(frames.size()), request.show_progress);
+  for (const int f : frames) {
     auto t0 = Clock::now();
-    advance_to_frame(world, f);
+    advance_to_frame(world, f);  // Steps through every frame in between.
     times.simulate_s += seconds_since(t0);
 
     t0 = Clock::now();
@@ -97,7 +126,7 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
     for (auto& sink : sinks) sink->write(frame, f);
     times.encode_s += seconds_since(t0);
     ++times.frames;
-    progress.update(f + 1);
+    progress.update(times.frames);
   }
   const auto t0 = Clock::now();
   for (auto& sink : sinks) sink->finish();

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -11,12 +12,17 @@ namespace systole::app {
 struct RenderRequest {
   std::filesystem::path video;    ///< MP4 to write; empty: no video.
   std::filesystem::path png_dir;  ///< Folder for numbered PNG frames; empty: none.
+  /// Frames to render and encode (0-based, sorted, no duplicates; app::parse_frame_list);
+  /// empty: every frame. The simulation still steps through every frame up to the last
+  /// listed one, so frame k is the same image whatever else is rendered. A video needs
+  /// consecutive frames (it then holds that range, starting at time 0).
+  std::vector<int> frames;
   bool show_progress = false;
 };
 
 /// What each stage cost, summed over the clip.
 struct StageTimes {
-  int frames = 0;
+  int frames = 0;          ///< Frames rendered.
   double simulate_s = 0;   ///< unit: s
   double render_s = 0;     ///< unit: s
   double readback_s = 0;   ///< unit: s
@@ -24,8 +30,10 @@ struct StageTimes {
   double wall_s = 0;       ///< Whole run including set-up. unit: s
 };
 
-/// Renders the clip. Outputs appear only when complete (temporary file + rename); a
-/// failure leaves earlier outputs untouched. Throws systole::Error.
+/// Renders the clip (or the requested frames of it). Outputs appear only when complete
+/// (temporary file + rename); a failure leaves earlier outputs untouched. PNG frames are
+/// named encode::frame_file_name(frame, clip frame count) whatever is selected. Throws
+/// systole::Error: kUsage for frames outside the clip, unsorted, or not consecutive with a video.
 StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request);
 
 /// "simulate 1.2 ms/frame, render ..." for the end-of-run summary.

@@ -41,11 +41,16 @@ std::string summarize(const scene::Scene& scene, const World& world) {
       s << "\n";
     }
     const auto& m = body.model;
-    s << "  constraints: " << m.springs.size() << " springs in " << m.springs.colors() << " colours";
-    s << (m.volume.enabled ? ", 1 volume constraint" : ", no volume constraint") << "\n";
+    s << "  constraints: " << m.springs.stretch_count << " stretch springs, " << m.springs.bending_count
+      << " bending springs (" << m.springs.colors() << " colours)";
+    s << (m.volume.enabled ? ", 1 volume constraint" : ", no volume constraint");
+    if (!m.pokes.empty() || !m.grabs.empty()) s << ", " << m.pokes.size() << " pokes, " << m.grabs.size() << " grabs";
+    s << "\n";
   }
   s << "solver " << method_name(scene.solver.method) << ": dt " << world.dt_s * 1e3 << " ms ("
-    << world.steps_per_frame << " steps per frame), " << scene.solver.substeps << " substeps\n";
+    << world.steps_per_frame << " steps per frame)";
+  for (const auto& body : world.organs) s << ", " << body.model.name << " " << body.model.substeps << " substeps";
+  s << "\n  why: " << world.step_reason << "\n";
   s << "output " << scene.output.width << "x" << scene.output.height << ", " << scene.output.fps << " fps, "
     << scene.output.frame_count() << " frames (" << scene.output.duration_s << " s)\n";
   return s.str();

@@ -6,15 +6,45 @@
 
 #include "common/error.h"
 #include "sim/step.h"
+#include "sim/step_size.h"
 
 namespace systole::app {
+
+namespace {
+
+/// The frame period split into whole steps no longer than `max_step_s`.
+int steps_per_frame(double frame_s, double max_step_s, bool round_down) {
+  const double n = frame_s / max_step_s;
+  return std::max(1, static_cast<int>(round_down ? std::ceil(n - 1e-9) : std::lround(n)));
+}
+
+/// For `dt: auto`: the step every body allows, then each body's substeps.
+void choose_steps(World& w, double frame_s) {
+  double max_step = frame_s;
+  std::vector<sim::StepLimits> limits;
+  for (const auto& body : w.organs) {
+    limits.push_back(sim::step_limits(body.model));
+    max_step = std::min(max_step, limits.back().max_step_s);
+  }
+  w.steps_per_frame = steps_per_frame(frame_s, max_step, true);
+  w.dt_s = frame_s / w.steps_per_frame;
+  w.step_reason = "auto:";
+  for (std::size_t o = 0; o < w.organs.size(); ++o) {
+    auto& model = w.organs[o].model;
+    model.substeps = std::max(1, static_cast<int>(std::ceil(w.dt_s / limits[o].max_substep_s - 1e-9)));
+    w.step_reason += " " + model.name + ": " + limits[o].reason + ".";
+  }
+}
+
+}  // namespace
 
 World build_world(const scene::Scene& scene) {
   World w;
   w.fps = scene.output.fps;
   const double frame_s = 1.0 / scene.output.fps;
-  w.steps_per_frame = std::max(1, static_cast<int>(std::lround(frame_s / scene.solver.dt_s)));
+  w.steps_per_frame = steps_per_frame(frame_s, scene.solver.dt_s, false);
   w.dt_s = frame_s / w.steps_per_frame;
+  w.step_reason = "as the scene sets (solver.dt, solver.substeps), rounded so whole steps make a frame";
   for (const auto& organ : scene.organs) {
     OrganBody body;
     body.geometry = mesh::build_organ_geometry(organ);
@@ -31,6 +61,7 @@ World build_world(const scene::Scene& scene) {
     body.state = sim::initial_state(body.model);
     w.organs.push_back(std::move(body));
   }
+  if (scene.solver.auto_dt) choose_steps(w, frame_s);
   return w;
 }
 

@@ -2,6 +2,7 @@
 // The simulated scene: every organ's geometry, body model and state, advanced together
 // on one clock.
 
+#include <string>
 #include <vector>
 
 #include "mesh/organ.h"
@@ -23,10 +24,12 @@ struct World {
   double dt_s = 0;          ///< unit: s
   double fps = 30;          ///< unit: 1/s
   int frames_done = 0;      ///< Frames the world has been advanced through.
+  std::string step_reason;  ///< Why dt and substeps are what they are (for `validate`).
 };
 
-/// Loads or generates every organ and builds its body. The step is the scene's dt rounded
-/// so a whole number of steps makes one frame.
+/// Loads or generates every organ and builds its body. The step is the scene's dt (or, for
+/// `dt: auto`, the longest every body allows: sim/step_size.h) rounded down so a whole
+/// number of steps makes one frame.
 World build_world(const scene::Scene& scene);
 
 /// Steps every organ to the time of `frame` (frames only move forward), checking the

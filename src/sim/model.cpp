@@ -183,7 +183,7 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
   }
 
   // The volume constraint needs a closed surface: on an open one "enclosed volume" means nothing.
-  if (organ.body.volume_stiffness_Pa > 0 && geometry.report.closed() && geometry.report.volume_m3 > 0) {
+  if (organ.body.volume_stiffness_Pa > 0 && geometry.report.encloses_volume()) {
     m.volume.enabled = true;
     m.volume.triangles = surface.triangles;
     m.volume.rest_m3 = enclosed_volume(m.rest_positions, surface.triangles);

@@ -1,0 +1,17 @@
+#pragma once
+// The name golden images are filed under: software rasterizers differ across versions (and
+// llvmpipe across LLVM versions and SIMD widths), so references are only comparable within
+// one key. See docs/golden-images.md.
+
+#include <string>
+
+#include "render/renderer.h"
+
+namespace systole::app {
+
+/// "llvmpipe-mesa-22.3.6-llvm-15.0.6-256-bits" from renderer "llvmpipe (LLVM 15.0.6, 256 bits)"
+/// and version "4.5 (Core Profile) Mesa 22.3.6": the driver, the Mesa version, then what the
+/// renderer string says in parentheses; lower case, [a-z0-9.] and single dashes only.
+std::string renderer_key(const render::GlInfo& gl);
+
+}  // namespace systole::app
