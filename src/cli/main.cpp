@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   const std::vector<systole::cli::Command> commands = {
       systole::cli::add_render_command(app),
       systole::cli::add_validate_command(app),
+      systole::cli::add_compare_command(app),
       systole::cli::add_info_command(app),
   };
 
