@@ -53,6 +53,7 @@ World build_world(const scene::Scene& scene) {
     options.dt_s = w.dt_s;
     options.gravity = scene.gravity;
     options.clip_s = scene.output.duration_s;
+    options.seed = scene.seed;
     options.floor = scene.floor;
     for (const auto& in : scene.interactions) {
       if (in.organ == organ.name) options.interactions.push_back(in);

@@ -197,6 +197,7 @@ struct Interaction {
   Eigen::Vector3d force_N = Eigen::Vector3d::Zero(); ///< kPoke: total force, shared by the patch's vertices. unit: N
   double start_s = 0;                                ///< kPoke: when the push starts. unit: s
   double duration_s = 0.1;                           ///< kPoke: how long it lasts. unit: s
+  Drive drive;                                       ///< kPoke: when set, the force follows phi(t) all clip long (a periodic push).
   std::vector<PathKey> path;                         ///< kGrab: the handle's path, smoothly interpolated; released after the last key.
   double stiffness_N_per_m = 2000;                   ///< kGrab: stiffness holding each vertex to the handle. unit: N/m
   Origin origin;

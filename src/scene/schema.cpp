@@ -577,6 +577,7 @@ ValueSpec<Interaction> interaction_spec() {
       field("force", vec3(Dimension::kForce), &Interaction::force_N, "Total force, shared by the patch's vertices.").required(),
       field("start", quantity(Dimension::kTime, closed(0, 3600)), &Interaction::start_s, "When the push starts."),
       field("duration", quantity(Dimension::kTime, open_closed(0, 3600)), &Interaction::duration_s, "How long the push lasts."),
+      field("drive", drive_spec(), &Interaction::drive, "When given, the force is scaled by the drive's phi(t) all clip long instead (a periodic push: the diaphragm on the liver); start and duration are then unused."),
   }));
   auto grab = map<Interaction>(common({
       field("path", list(key, 1, 1024, "list of path keys"), &Interaction::path,

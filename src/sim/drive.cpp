@@ -67,22 +67,52 @@ double waveform_value(const scene::Drive& drive, double u) {
   return 0.0;
 }
 
-double activation(const scene::Drive& drive, double t_s, double ramp_s) {
+double activation(const scene::Drive& drive, double t_s, double ramp_s, const std::vector<double>& beats) {
   if (drive.waveform == scene::Waveform::kNone || drive.rate_hz <= 0) return 0.0;
   const double local_t = t_s - drive.delay_s;
   if (local_t < 0 && drive.waveform != scene::Waveform::kSine && drive.waveform != scene::Waveform::kFourier) {
     return 0.0;  // Templates start at rest; the delay only postpones the first beat.
   }
   const double cycles = drive_cycles(drive, local_t, ramp_s);
+  if (beats.size() >= 2 && cycles >= 0 && cycles < beats.back()) {
+    const auto next = std::upper_bound(beats.begin(), beats.end(), cycles);
+    const double start = *(next - 1), end = *next;
+    return waveform_value(drive, (cycles - start) / (end - start));
+  }
   const double u = cycles - std::floor(cycles);
   return waveform_value(drive, u);
 }
 
-void region_contractions(const std::vector<scene::Region>& regions, double t_s, double ramp_s, Eigen::VectorXd& out) {
+void region_contractions(const std::vector<scene::Region>& regions, const std::vector<std::vector<double>>& beats,
+                         double t_s, double ramp_s, Eigen::VectorXd& out) {
+  static const std::vector<double> regular;
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const auto& d = regions[r].drive;
-    out[static_cast<Eigen::Index>(r)] = d.amplitude * activation(d, t_s, ramp_s);
+    out[static_cast<Eigen::Index>(r)] = d.amplitude * activation(d, t_s, ramp_s, r < beats.size() ? beats[r] : regular);
   }
+}
+
+namespace {
+
+/// SplitMix64 (Steele, Lea & Flood, "Fast splittable pseudorandom number generators",
+/// OOPSLA 2014): a counter-based hash, so draw k needs no earlier draws.
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+}  // namespace
+
+std::vector<double> irregular_beats(double irregularity, std::uint64_t seed, std::uint64_t stream, double cycles) {
+  std::vector<double> b = {0.0};
+  for (std::uint64_t k = 0; b.back() <= cycles + 1.0; ++k) {
+    const std::uint64_t h = splitmix64(splitmix64(seed ^ (stream * 0x632be59bd9b4e019ull)) + k);
+    const double u = double(h >> 11) * 0x1.0p-53 * 2.0 - 1.0;  // Uniform in [-1, 1).
+    b.push_back(b.back() + 1.0 + irregularity * u);
+  }
+  return b;
 }
 
 double highest_frequency_hz(const scene::Drive& drive) {

@@ -4,6 +4,7 @@
 // (Kenwright & Sinmai, "Lightweight Self-Driven Deformable Organ Animations", §3).
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
 #include "scene/scene.h"
@@ -18,12 +19,20 @@ double drive_cycles(const scene::Drive& drive, double t_s, double ramp_s);
 double waveform_value(const scene::Drive& drive, double u);
 
 /// The activation phi at time t_s (delay applied; before the delay the region is at rest
-/// phase 0). `ramp_s` is the clip length over which a rate ramp runs.
-double activation(const scene::Drive& drive, double t_s, double ramp_s);
+/// phase 0). `ramp_s` is the clip length over which a rate ramp runs. `beats`, when not
+/// empty, are irregular beat boundaries in cycles (see irregular_beats): beat k spans
+/// cycles [beats[k], beats[k+1]) and the waveform is stretched over it.
+double activation(const scene::Drive& drive, double t_s, double ramp_s, const std::vector<double>& beats = {});
+
+/// Seeded irregular beat boundaries for a drive with irregularity r > 0: b0 = 0 and
+/// b(k+1) = b(k) + 1 + r u(k), u(k) uniform in [-1, 1] from a hash of (seed, stream, k), so
+/// a beat's length does not depend on what else was drawn. Covers `cycles` cycles.
+std::vector<double> irregular_beats(double irregularity, std::uint64_t seed, std::uint64_t stream, double cycles);
 
 /// Rest-length contraction of every region at time t: amplitude * phi(t), into `out`
 /// (sized to the region count).
-void region_contractions(const std::vector<scene::Region>& regions, double t_s, double ramp_s, Eigen::VectorXd& out);
+void region_contractions(const std::vector<scene::Region>& regions, const std::vector<std::vector<double>>& beats,
+                         double t_s, double ramp_s, Eigen::VectorXd& out);
 
 /// Highest frequency present in the drive at any time: rate x highest harmonic, or the
 /// sharpest template's equivalent. unit: Hz

@@ -14,7 +14,7 @@ void explicit_step(const Model& model, State& s, double dt_s) {
   const double drag = std::exp(-model.drag_per_s * h);
   const Eigen::Index count = s.x.cols();
   for (int sub = 0; sub < n; ++sub) {
-    region_contractions(model.regions, s.time_s, model.ramp_s, s.region_contraction);
+    region_contractions(model.regions, model.beat_boundaries, s.time_s, model.ramp_s, s.region_contraction);
     internal_and_scripted_forces(model, s.x, s.v, s.time_s, s, s.force);
     for (Eigen::Index i = 0; i < count; ++i) {
       const double w = model.inverse_mass[i];

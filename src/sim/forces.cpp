@@ -37,8 +37,9 @@ void internal_and_scripted_forces(const Model& model, const Eigen::Matrix3Xd& x,
     }
   }
   for (const Poke& p : model.pokes) {
-    if (!poke_active(p, t)) continue;
-    for (int i : p.particles) f.col(i) += p.force_per_particle_N;
+    const double factor = poke_factor(p, t, model.ramp_s);
+    if (factor == 0) continue;
+    for (int i : p.particles) f.col(i) += factor * p.force_per_particle_N;
   }
   for (const Grab& g : model.grabs) {
     if (!grab_active(g, t)) continue;

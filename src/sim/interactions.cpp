@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "sim/drive.h"
+
 namespace systole::sim {
 
 Eigen::Vector3d handle_position(const Grab& grab, double t) {
@@ -17,6 +19,11 @@ Eigen::Vector3d handle_position(const Grab& grab, double t) {
   const Eigen::Vector3d& p2 = p[i + 1].position_m;
   const Eigen::Vector3d& p3 = p[std::min(i + 2, p.size() - 1)].position_m;
   return 0.5 * ((2 * p1) + (-p0 + p2) * u + (2 * p0 - 5 * p1 + 4 * p2 - p3) * u * u + (-p0 + 3 * p1 - 3 * p2 + p3) * u * u * u);
+}
+
+double poke_factor(const Poke& poke, double t, double ramp_s) {
+  if (poke.drive.waveform != scene::Waveform::kNone) return activation(poke.drive, t, ramp_s);
+  return t >= poke.start_s && t < poke.end_s ? 1.0 : 0.0;
 }
 
 bool grab_active(const Grab& grab, double t) { return t >= grab.path.front().time_s && t <= grab.path.back().time_s; }

@@ -14,8 +14,9 @@ Eigen::Vector3d handle_position(const Grab& grab, double t_s);
 /// Whether the grab holds its patch at time t: from the first key to the last.
 bool grab_active(const Grab& grab, double t_s);
 
-/// Whether the poke pushes at time t: [start, end).
-inline bool poke_active(const Poke& poke, double t_s) { return t_s >= poke.start_s && t_s < poke.end_s; }
+/// How much of the poke's force acts at time t: 1 within [start, end) for a one-off push,
+/// phi(t) for a periodic one, else 0. unit: 1
+double poke_factor(const Poke& poke, double t_s, double ramp_s);
 
 /// Keeps every particle on the free side of the model's floor, if it has one: a particle
 /// found below the plane is moved onto it (frictionless, inelastic).

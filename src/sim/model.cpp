@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "common/error.h"
+#include "sim/drive.h"
 #include "sim/graph_coloring.h"
 
 namespace systole::sim {
@@ -90,6 +91,7 @@ void add_interactions(Model& m, const std::vector<scene::Interaction>& interacti
       p.particles = std::move(patch);
       p.start_s = in.start_s;
       p.end_s = in.start_s + in.duration_s;
+      p.drive = in.drive;
       m.pokes.push_back(std::move(p));
     } else {
       Grab g;
@@ -121,6 +123,14 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
   m.ramp_s = options.clip_s;
   m.floor = options.floor;
   m.regions = organ.regions;
+  for (std::size_t r = 0; r < m.regions.size(); ++r) {
+    const auto& d = m.regions[r].drive;
+    std::vector<double> beats;
+    if (d.irregularity > 0 && d.waveform != scene::Waveform::kNone) {
+      beats = irregular_beats(d.irregularity, options.seed, r, drive_cycles(d, options.clip_s, options.clip_s));
+    }
+    m.beat_boundaries.push_back(std::move(beats));
+  }
   m.vertex_region = geometry.vertex_region;
 
   const int n = static_cast<int>(surface.positions.size());

@@ -37,12 +37,14 @@ struct VolumeConstraint {
   double compliance_m5_per_N = 0;          ///< V0 / bulk modulus, for C = V - V0. unit: m^5/N
 };
 
-/// A scripted push: a force spread over a patch of particles during [start_s, end_s).
+/// A scripted push: a force spread over a patch of particles during [start_s, end_s), or,
+/// with a drive, scaled by the drive's phi(t) all the time.
 struct Poke {
   std::vector<int> particles;
   Eigen::Vector3d force_per_particle_N = Eigen::Vector3d::Zero();  ///< unit: N
   double start_s = 0;  ///< unit: s
   double end_s = 0;    ///< unit: s
+  scene::Drive drive;  ///< waveform kNone: a one-off push.
 };
 
 /// A patch of particles held by stiff zero-length springs to a handle that moves along a
@@ -60,6 +62,7 @@ struct ModelOptions {
   double dt_s = 1.0 / 240.0;  ///< The step the solver will be called with (auto dt resolved). unit: s
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< unit: m/s^2
   double clip_s = 0;          ///< The clip's length: rate ramps span it. unit: s
+  std::uint64_t seed = 1;     ///< The scene's seed: irregular rhythms.
   std::vector<scene::Interaction> interactions;  ///< Those touching this organ.
   scene::Floor floor;
 };
@@ -73,6 +76,8 @@ struct Model {
   Springs springs;
   VolumeConstraint volume;
   std::vector<scene::Region> regions;       ///< Drives by region index.
+  /// Per region: the beat boundaries in cycles when its drive is irregular (seeded), else empty.
+  std::vector<std::vector<double>> beat_boundaries;
   std::vector<int> vertex_region;           ///< Per particle; -1 = undriven body.
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< unit: m/s^2
   double drag_per_s = 0;                    ///< unit: 1/s

@@ -110,12 +110,13 @@ void xpbd_step(const Model& model, State& s, double dt_s) {
       s.v.col(i) = drag * (s.v.col(i) + h * model.gravity);
     }
     for (const Poke& p : model.pokes) {
-      if (!poke_active(p, s.time_s)) continue;
-      for (int i : p.particles) s.v.col(i) += h * model.inverse_mass[i] * p.force_per_particle_N;
+      const double factor = poke_factor(p, s.time_s, model.ramp_s);
+      if (factor == 0) continue;
+      for (int i : p.particles) s.v.col(i) += h * factor * model.inverse_mass[i] * p.force_per_particle_N;
     }
     s.x_prev = s.x;
     s.x += h * s.v;
-    region_contractions(model.regions, t_end, model.ramp_s, s.region_contraction);
+    region_contractions(model.regions, model.beat_boundaries, t_end, model.ramp_s, s.region_contraction);
     s.spring_lambda.setZero();
     s.volume_lambda = 0;
     solve_springs(model, s, h);

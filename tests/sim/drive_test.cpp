@@ -86,5 +86,32 @@ TEST(Drive, SamplesPassThroughEverySample) {
   }
 }
 
+TEST(Drive, IrregularBeatsAreSeededAndBounded) {
+  const auto a = irregular_beats(0.3, 7, 0, 50);
+  EXPECT_EQ(a, irregular_beats(0.3, 7, 0, 50)) << "same seed, same rhythm";
+  EXPECT_NE(a, irregular_beats(0.3, 8, 0, 50)) << "another seed, another rhythm";
+  EXPECT_NE(a, irregular_beats(0.3, 7, 1, 50)) << "another region, another rhythm";
+  ASSERT_GT(a.back(), 50.0);
+  double shortest = 10, longest = 0;
+  for (std::size_t k = 1; k < a.size(); ++k) {
+    shortest = std::min(shortest, a[k] - a[k - 1]);
+    longest = std::max(longest, a[k] - a[k - 1]);
+  }
+  EXPECT_GE(shortest, 0.7);
+  EXPECT_LE(longest, 1.3);
+  EXPECT_GT(longest - shortest, 0.2) << "the beats really vary";
+}
+
+TEST(Drive, IrregularBeatsStretchTheWaveform) {
+  auto d = make(scene::Waveform::kCardiac, 1.0);
+  d.systolic_fraction = 0.3;
+  const std::vector<double> beats = {0.0, 1.5, 2.0, 3.0};
+  // Beat 0 lasts 1.5 s: the peak of systole comes at 0.15 * 1.5 s.
+  EXPECT_NEAR(activation(d, 0.225, 10, beats), 1.0, 1e-12);
+  EXPECT_EQ(activation(d, 1.0, 10, beats), 0.0) << "diastole of the long beat";
+  // Beat 1 lasts 0.5 s, from 1.5 s: its peak is at 1.5 + 0.075 s.
+  EXPECT_NEAR(activation(d, 1.575, 10, beats), 1.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace systole::sim
