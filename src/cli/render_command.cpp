@@ -43,9 +43,11 @@ Command add_render_command(CLI::App& app) {
               if (!o->no_video && !o->output.empty()) request.video = o->output;
             } else if (!o->no_video) {
               request.video = o->output.empty() ? app::default_video_path(scene) : std::filesystem::path(o->output);
-              // The default out/ folder is ours to create; a folder the user named must
-              // exist, so a typo in it is reported rather than silently created.
-              if (o->output.empty() && scene.output.file.empty()) std::filesystem::create_directories("out");
+              // The scene's output folder (out/ by default) is ours to create; a folder named
+              // with -o must exist, so a typo in it is reported rather than silently created.
+              if (o->output.empty() && request.video.has_parent_path()) {
+                std::filesystem::create_directories(request.video.parent_path());
+              }
             }
             request.png_dir = o->png_dir;
             request.show_progress = app::Progress::stderr_is_terminal();

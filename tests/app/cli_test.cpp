@@ -157,6 +157,15 @@ TEST(Cli, FailedRenderLeavesTheEarlierOutputUntouched) {
   EXPECT_EQ(files, 1) << "no temporary file is left behind";
 }
 
+TEST(Cli, TheScenesOutputFolderIsCreated) {
+  // As scripts/demo runs it: no -o, so the scene's output.file (out/heart.mp4) is used and
+  // its folder made in the working directory.
+  const auto dir = scratch("default_output");
+  const auto r = run("cd " + dir.string() + " && " + systole() + " render " + kHeart + kSmall);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::is_regular_file(dir / "out" / "heart.mp4")) << r.output;
+}
+
 TEST(Cli, OutputIntoAMissingFolderIsCannotCreate) {
   const auto r = run(systole() + " render " + kHeart + kSmall + "-o /nonexistent/folder/clip.mp4");
   EXPECT_EQ(r.exit_code, 73) << r.output;
