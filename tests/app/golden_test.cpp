@@ -95,10 +95,12 @@ std::string reference_name(const std::string& scene, int frame) {
   return scene + "_" + number + ".png";
 }
 
+/// The figures without the verdict: "max delta 6 (tolerance 2), pixels over ..., psnr 51.98 dB".
 std::string one_line(const app::Comparison& c) {
   std::string text = app::describe(c, kTolerance);
   text.pop_back();
-  std::replace(text.begin(), text.end(), '\n', ';');
+  text.erase(text.rfind('\n'));
+  for (auto at = text.find('\n'); at != std::string::npos; at = text.find('\n')) text.replace(at, 1, ", ");
   return text;
 }
 
@@ -112,6 +114,7 @@ struct GoldenSettings {
 
 struct GoldenOutcome {
   RendererId renderer;
+  std::string made_with;               ///< The references' renderer when it is not exactly ours.
   std::string skip_reason;             ///< Set when no references exist for this renderer.
   std::vector<std::string> failures;   ///< One per failing or missing reference.
   std::vector<std::string> changes;    ///< What an update wrote or removed.
@@ -197,6 +200,13 @@ GoldenOutcome check_goldens(const GoldenSettings& s) {
                       "; run scripts/update-goldens to create references for " + out.renderer.key;
     return out;
   }
+  // One key may span renderer strings that give the same pixels (e.g. llvmpipe's vector
+  // width); if pixels differ after all, the failure says so plainly.
+  const std::string old_manifest = read_file(key_dir / "MANIFEST.txt");
+  const std::string made_with =
+      line_value(old_manifest, "gl renderer: ") + ", " + line_value(old_manifest, "gl version: ");
+  if (!old_manifest.empty() && made_with != out.renderer.renderer + ", " + out.renderer.version) out.made_with = made_with;
+
   std::vector<fs::path> scenes;
   for (const auto& entry : fs::directory_iterator(s.scenes_dir)) {
     if (entry.path().extension() == ".yaml") scenes.push_back(entry.path());
@@ -239,7 +249,11 @@ TEST(Golden, EveryShippedSceneMatchesItsReferences) {
   for (const auto& failure : out.failures) ADD_FAILURE() << failure;
   if (!out.failures.empty()) {
     ADD_FAILURE() << out.failures.size() << " golden image(s) failed for " << out.renderer.key
-                  << ". If the change is intended, run scripts/update-goldens and commit tests/golden/.";
+                  << ". If the change is intended, run scripts/update-goldens and commit tests/golden/."
+                  << (out.made_with.empty() ? ""
+                                            : "\nNote: these references were made with " + out.made_with +
+                                                  "; this machine renders with " + out.renderer.renderer + ", " +
+                                                  out.renderer.version + ".");
   }
 }
 
