@@ -3,11 +3,33 @@
 // (Model, State), so snapshots, restarts and determinism tests are plain copies.
 
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 #include "sim/model.h"
 
 namespace systole::sim {
+
+struct ImplicitCache;  // sim/implicit_euler.h
+
+/// The implicit solver's reusable system matrix (pattern built once), value-slot table and
+/// CG solver: empty until the first implicit step builds it. Copying deep-copies it, so a
+/// copied State steps on its own with the same results.
+class ImplicitScratch {
+ public:
+  ImplicitScratch();
+  ~ImplicitScratch();
+  ImplicitScratch(const ImplicitScratch& other);
+  ImplicitScratch& operator=(const ImplicitScratch& other);
+  ImplicitScratch(ImplicitScratch&& other) noexcept;
+  ImplicitScratch& operator=(ImplicitScratch&& other) noexcept;
+
+  ImplicitCache* get() const { return cache_.get(); }
+  void reset(std::unique_ptr<ImplicitCache> cache);
+
+ private:
+  std::unique_ptr<ImplicitCache> cache_;
+};
 
 struct State {
   double time_s = 0;                 ///< unit: s
@@ -21,6 +43,7 @@ struct State {
   Eigen::VectorXd region_contraction;  ///< amplitude * phi per region at the current substep. unit: 1
   Eigen::Matrix3Xd volume_gradient;  ///< dV/dx per particle. unit: m^2
   Eigen::Matrix3Xd force;            ///< Force per particle (explicit and implicit solvers). unit: N
+  ImplicitScratch implicit;          ///< Matrix and solver of the implicit solver (built lazily).
 };
 
 /// The body at rest at t = 0.

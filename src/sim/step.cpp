@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "sim/explicit_euler.h"
+#include "sim/implicit_euler.h"
 #include "sim/xpbd.h"
 
 namespace systole::sim {
@@ -18,7 +19,8 @@ void step(const Model& model, State& state, double dt_s) {
       explicit_step(model, state, dt_s);
       return;
     case scene::SolverMethod::kImplicit:
-      break;
+      implicit_step(model, state, dt_s);
+      return;
   }
   throw Error(ExitCode::kDataError, "solver.method: only 'xpbd' is available in this build");
 }
@@ -32,6 +34,17 @@ std::optional<std::string> diagnose(const Model& model, const State& s) {
     }
   }
   if (s.x.cols() == 0) return std::nullopt;
+  // Fifty body lengths a second: faster than any poke or beat moves tissue; an unstable
+  // step gets there long before positions overflow.
+  const double speed_limit = 50.0 * model.rest_extent_m;
+  for (Eigen::Index i = 0; i < s.v.cols(); ++i) {
+    if (s.v.col(i).norm() > speed_limit) {
+      std::ostringstream m;
+      m << "particle " << i << " of '" << model.name << "' moves at " << s.v.col(i).norm()
+        << " m/s, beyond the " << speed_limit << " m/s no tissue reaches (kinetic energy is exploding)";
+      return m.str();
+    }
+  }
   const double extent = (s.x.rowwise().maxCoeff() - s.x.rowwise().minCoeff()).norm();
   // Ten times the rest size: no drive or poke of a soft organ does that; an unstable step does.
   if (model.rest_extent_m > 0 && extent > 10.0 * model.rest_extent_m) {
