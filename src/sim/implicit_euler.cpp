@@ -211,12 +211,13 @@ void assemble(const Model& model, State& s, ImplicitCache& c, double h, double t
   }
 }
 
-/// The volume term E = (k_V / 2) (V - V0)^2, k_V = 1 / compliance (unit: N/m^5): adds
+/// The volume term E = (k_V / 2) (V - V0(t))^2, k_V = 1 / compliance (unit: N/m^5), with the
+/// (possibly driven) rest volume at the substep's end, t + h, like the rest lengths: adds
 /// h f_V + h^2 df_V/dx v0 to the right-hand side and returns in c.u the factor of its
 /// stiffness, h^2 k_V g g^T = u u^T with g = grad V (pinned entries zeroed). The Hessian's
 /// other term, k_V (V - V0) d^2V/dx^2, is sparse but indefinite and vanishes at the rest
 /// volume; it is dropped, as the geometric term of a compressed spring is clamped.
-void add_volume(const Model& model, State& s, ImplicitCache& c, double h) {
+void add_volume(const Model& model, State& s, ImplicitCache& c, double h, double t_end) {
   const VolumeConstraint& vol = model.volume;
   Eigen::Matrix3Xd& g = s.volume_gradient;
   g.setZero();
@@ -234,7 +235,7 @@ void add_volume(const Model& model, State& s, ImplicitCache& c, double h) {
     if (model.inverse_mass[i] == 0) g.col(i).setZero();
   }
   const double k_v = 1.0 / vol.compliance_m5_per_N;
-  const double pressure = -k_v * (six_v / 6.0 - vol.rest_m3);  // unit: N/m^2
+  const double pressure = -k_v * (six_v / 6.0 - driven_rest_volume(model, t_end));  // unit: N/m^2
   double g_dot_v = 0;                                          // dV/dt. unit: m^3/s
   for (int i = 0; i < n; ++i) g_dot_v += g.col(i).dot(s.v.col(i));
   Eigen::Map<Eigen::Matrix3Xd> rhs(c.rhs.data(), 3, n);
@@ -265,7 +266,7 @@ void implicit_step(const Model& model, State& s, double dt_s) {
     // Backward Euler evaluates the rest lengths where it evaluates the forces: at t + h.
     region_contractions(model.regions, model.beat_boundaries, t_end, model.ramp_s, s.region_contraction);
     assemble(model, s, c, h, s.time_s, t_end);
-    if (model.volume.enabled) add_volume(model, s, c, h);
+    if (model.volume.enabled) add_volume(model, s, c, h, t_end);
     c.cg.compute(c.matrix);  // Only reads the diagonal for the preconditioner.
     solve(c, c.rhs, c.dv);
     c.last_cg_iterations = static_cast<int>(c.cg.iterations());
