@@ -5,7 +5,7 @@
 
 namespace systole::mesh {
 
-std::vector<std::string> procedural_organs() { return {"heart"}; }
+std::vector<std::string> procedural_organs() { return {"heart", "lungs", "kidney", "liver"}; }
 
 OrganMesh generate_organ(const std::string& name, int detail) {
   if (detail < 1 || detail > 6) {
@@ -13,6 +13,9 @@ OrganMesh generate_organ(const std::string& name, int detail) {
                                           std::to_string(detail));
   }
   if (name == "heart") return procedural::heart(detail);
+  if (name == "lungs") return procedural::lungs(detail);
+  if (name == "kidney") return procedural::kidney(detail);
+  if (name == "liver") return procedural::liver(detail);
   std::string known;
   for (const std::string& organ : procedural_organs()) known += (known.empty() ? "" : ", ") + organ;
   throw Error(ExitCode::kDataError, "unknown procedural organ '" + name + "' (known: " + known + ")");

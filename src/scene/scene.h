@@ -123,6 +123,9 @@ struct Body {
   double volume_stiffness_Pa = 20000;  ///< Bulk modulus of the enclosed volume; 0 = no volume constraint. unit: Pa
   double drag_per_s = 1.0;        ///< Velocity damping towards rest (the surrounding tissue). unit: 1/s
   double bending_N_per_m = 0;     ///< Stiffness of the springs across each edge (0: no bending). unit: N/m
+  /// Drives the rest volume, V0(t) = V0 (1 + amplitude * phi(t - delay)): lungs inflating.
+  /// waveform kNone: a constant rest volume. Needs the volume constraint.
+  Drive volume_drive;
 };
 
 struct Organ {

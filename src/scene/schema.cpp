@@ -524,6 +524,7 @@ ValueSpec<Organ> organ_spec() {
                 field("volume_stiffness", quantity(Dimension::kPressure, closed(0, 1e9)), &Body::volume_stiffness_Pa, "Bulk modulus of the enclosed volume; 0 = no volume constraint."),
                 field("drag", quantity(Dimension::kRate, closed(0, 1000)), &Body::drag_per_s, "Velocity damping towards rest (the surrounding tissue)."),
                 field("bending", quantity(Dimension::kStiffness, closed(0, 1e9)), &Body::bending_N_per_m, "Stiffness of the springs across each edge, which resist folding; 0 = none."),
+                field("volume_drive", drive_spec(), &Body::volume_drive, "Drives the rest volume instead of rest lengths: V0(t) = V0 (1 + amplitude phi(t - delay)), `amplitude` the fraction of volume added (lungs inflating). Needs `volume_stiffness` > 0 and a closed surface."),
             }), &Organ::body, "The soft body's physical parameters."),
       field("regions", list(region_spec(), 0, 256, "list of regions"), &Organ::regions, "Parts with their own rhythm and stiffness, applied in order."),
   }, [](const Node& node, Organ& o, const std::string& path, const Context&) {

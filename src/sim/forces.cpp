@@ -28,7 +28,7 @@ void internal_and_scripted_forces(const Model& model, const Eigen::Matrix3Xd& x,
     // Pressure from the volume energy E = (K / 2V0) (V - V0)^2: f = -(V - V0) / compliance * dV/dx.
     double six_v = 0;
     for (const auto& t3 : model.volume.triangles) six_v += x.col(t3[0]).dot(x.col(t3[1]).cross(x.col(t3[2])));
-    const double pressure = -(six_v / 6.0 - model.volume.rest_m3) / model.volume.compliance_m5_per_N;
+    const double pressure = -(six_v / 6.0 - driven_rest_volume(model, t)) / model.volume.compliance_m5_per_N;
     for (const auto& t3 : model.volume.triangles) {
       const auto p0 = x.col(t3[0]), p1 = x.col(t3[1]), p2 = x.col(t3[2]);
       f.col(t3[0]) += pressure / 6.0 * p1.cross(p2);

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include "sim/drive.h"
 #include "sim/model.h"
 #include "sim/state.h"
 
@@ -15,6 +16,15 @@ inline double driven_rest_length(const Springs& sp, int j, const Eigen::VectorXd
   const double ca = sp.region_a[j] >= 0 ? contraction[sp.region_a[j]] : 0.0;
   const double cb = sp.region_b[j] >= 0 ? contraction[sp.region_b[j]] : 0.0;
   return sp.rest_m[j] * (1.0 - 0.5 * (ca + cb));
+}
+
+/// Rest volume of the volume constraint at time t: V0(t) = V0 (1 + amplitude phi(t - delay))
+/// when the body has a volume drive (lungs inflating), else V0. Every solver's volume term
+/// uses it in place of rest_m3. unit: m^3
+inline double driven_rest_volume(const Model& model, double t_s) {
+  const VolumeConstraint& vol = model.volume;
+  if (vol.drive.waveform == scene::Waveform::kNone) return vol.rest_m3;
+  return vol.rest_m3 * (1.0 + vol.drive.amplitude * activation(vol.drive, t_s, model.ramp_s, vol.beat_boundaries));
 }
 
 /// Force on every particle at positions x, velocities v and time t (regions' contraction

@@ -198,6 +198,18 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
     m.volume.triangles = surface.triangles;
     m.volume.rest_m3 = enclosed_volume(m.rest_positions, surface.triangles);
     m.volume.compliance_m5_per_N = m.volume.rest_m3 / organ.body.volume_stiffness_Pa;
+    m.volume.drive = organ.body.volume_drive;
+    const scene::Drive& d = m.volume.drive;
+    if (d.irregularity > 0 && d.waveform != scene::Waveform::kNone) {
+      // Its own stream after the regions', so adding it changes no region's beats.
+      m.volume.beat_boundaries = irregular_beats(d.irregularity, options.seed, m.regions.size(),
+                                                 drive_cycles(d, options.clip_s, options.clip_s));
+    }
+  } else if (organ.body.volume_drive.waveform != scene::Waveform::kNone) {
+    throw Error(ExitCode::kDataError, "organ '" + organ.name + "': body.volume_drive drives the rest volume, so it needs " +
+                                          (organ.body.volume_stiffness_Pa > 0
+                                               ? std::string("a closed surface (this one is open or non-manifold: see the mesh report)")
+                                               : std::string("body.volume_stiffness > 0")));
   }
   add_interactions(m, options.interactions);
   return m;

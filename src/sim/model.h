@@ -33,8 +33,10 @@ struct Springs {
 struct VolumeConstraint {
   bool enabled = false;
   std::vector<Eigen::Vector3i> triangles;  ///< The closed surface, outward CCW.
-  double rest_m3 = 0;                      ///< unit: m^3
-  double compliance_m5_per_N = 0;          ///< V0 / bulk modulus, for C = V - V0. unit: m^5/N
+  double rest_m3 = 0;                      ///< V0, the rest volume undriven. unit: m^3
+  double compliance_m5_per_N = 0;          ///< V0 / bulk modulus, for C = V - V0(t). unit: m^5/N
+  scene::Drive drive;                      ///< V0(t) = V0 (1 + amplitude phi(t)); kNone: constant.
+  std::vector<double> beat_boundaries;     ///< The drive's seeded irregular beats, else empty.
 };
 
 /// A scripted push: a force spread over a patch of particles during [start_s, end_s), or,

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/drive.h"
+#include "sim/forces.h"
 #include "sim/interactions.h"
 
 namespace systole::sim {
@@ -55,7 +56,7 @@ void solve_springs(const Model& model, State& s, double h) {
 
 /// Global volume constraint C = V(x) - V0 (Müller et al., "Position Based Dynamics", 2007,
 /// §4.4, in XPBD form): one multiplier for the whole surface.
-void solve_volume(const Model& model, State& s, double h) {
+void solve_volume(const Model& model, State& s, double t, double h) {
   const VolumeConstraint& vol = model.volume;
   if (!vol.enabled) return;
   Eigen::Matrix3Xd& g = s.volume_gradient;
@@ -69,7 +70,7 @@ void solve_volume(const Model& model, State& s, double h) {
     g.col(t[2]) += p0.cross(p1);
   }
   g /= 6.0;
-  const double c = six_v / 6.0 - vol.rest_m3;
+  const double c = six_v / 6.0 - driven_rest_volume(model, t);
   double denom = 0;
   for (Eigen::Index i = 0; i < s.x.cols(); ++i) denom += model.inverse_mass[i] * g.col(i).squaredNorm();
   const double alpha_tilde = vol.compliance_m5_per_N / (h * h);
@@ -120,7 +121,7 @@ void xpbd_step(const Model& model, State& s, double dt_s) {
     s.spring_lambda.setZero();
     s.volume_lambda = 0;
     solve_springs(model, s, h);
-    solve_volume(model, s, h);
+    solve_volume(model, s, t_end, h);
     solve_grabs(model, s, t_end, h);
     resolve_floor_contact(model, s.x);
     s.v = (s.x - s.x_prev) / h;

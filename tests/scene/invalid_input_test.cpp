@@ -19,7 +19,7 @@ TEST(SceneInvalid, UnknownKeyNamesPlaceAndSuggestsTheClosestKey) {
   EXPECT_EQ(f.code, ExitCode::kDataError);
   EXPECT_EQ(f.message,
             "scenes/test.yaml:5:7: organs[0].body: unknown key 'stifness' (did you mean 'stiffness'?); "
-            "allowed keys: mass, stiffness, damping, volume_stiffness, drag, bending");
+            "allowed keys: mass, stiffness, damping, volume_stiffness, drag, bending, volume_drive");
 }
 
 TEST(SceneInvalid, UnknownTopLevelKeyWithoutCloseMatchHasNoSuggestion) {

@@ -60,7 +60,7 @@ TEST(SceneOverrides, ValueIsValidatedAndNamedAsTheOrigin) {
 TEST(SceneOverrides, UnknownKeyGetsTheUnknownKeyMessage) {
   const auto f = load_error(kTwoOrgans, {"organs.heart.body.stifness=1"});
   EXPECT_EQ(f.message, "-D organs.heart.body.stifness=1: organs[0].body: unknown key 'stifness' (did you mean 'stiffness'?); "
-                       "allowed keys: mass, stiffness, damping, volume_stiffness, drag, bending");
+                       "allowed keys: mass, stiffness, damping, volume_stiffness, drag, bending, volume_drive");
 }
 
 TEST(SceneOverrides, MissingItemsAreErrors) {

@@ -39,18 +39,6 @@ const char* const kPartNames[kPartCount] = {"left_ventricle", "right_ventricle",
                                             "right_atrium",   "apex",            "aorta",
                                             "pulmonary_trunk", "superior_vena_cava", "inferior_vena_cava"};
 
-// Orthonormal axes whose first column points along `along`, the second as close to
-// `towards` as it can.
-Eigen::Matrix3d axes_along(const Vec& along, const Vec& towards) {
-  const Vec x = along.normalized();
-  const Vec y = (towards - x * x.dot(towards)).normalized();
-  Eigen::Matrix3d m;
-  m.col(0) = x;
-  m.col(1) = y;
-  m.col(2) = x.cross(y);
-  return m;
-}
-
 struct HeartFrame {
   Vec base = Vec(0.0, 0.012, 0.0);                       // Centre of the ventricular base. unit: m
   Vec axis = Vec(0.43, -0.82, 0.37).normalized();        // Base to apex.

@@ -14,4 +14,18 @@ int target_triangles(int detail);
 /// superior_vena_cava, inferior_vena_cava.
 OrganMesh heart(int detail);
 
+/// Both lungs, about 25 cm apex to base and 28 cm across, as two closed surfaces plus the
+/// airway (trachea and main bronchi) as a third. The left lung is the smaller, hollowed by
+/// the heart, with the cardiac notch. Parts: right_upper_lobe, right_middle_lobe,
+/// right_lower_lobe, left_upper_lobe, left_lower_lobe, trachea (the airway stub: trachea and main bronchi).
+OrganMesh lungs(int detail);
+
+/// A left kidney, about 11 cm long, hilum facing medially (-X). Parts: upper_pole,
+/// interpolar, lower_pole (the cortex along the long axis), hilum (vessel and ureter stubs).
+OrganMesh kidney(int detail);
+
+/// A liver, about 22 cm wide. Parts: right_lobe, left_lobe (divided at the falciform
+/// ligament), gallbladder, inferior_vena_cava (a stub at the back of the dome).
+OrganMesh liver(int detail);
+
 }  // namespace systole::mesh::procedural

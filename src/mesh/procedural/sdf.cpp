@@ -1,5 +1,6 @@
 #include "mesh/procedural/sdf.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
@@ -58,6 +59,21 @@ double Primitive::distance(const Eigen::Vector3d& p) const {
   return (std::sqrt(x2 * a2 * il2) + y * rr) * il2 - radius_a;
 }
 
+Eigen::Matrix3d axes_along(const Eigen::Vector3d& along, const Eigen::Vector3d& towards) {
+  const Eigen::Vector3d x = along.normalized();
+  const Eigen::Vector3d y = (towards - x * x.dot(towards)).normalized();
+  Eigen::Matrix3d m;
+  m.col(0) = x;
+  m.col(1) = y;
+  m.col(2) = x.cross(y);
+  return m;
+}
+
+Primitive carved(Primitive p) {
+  p.carve = true;
+  return p;
+}
+
 double smooth_min(double x, double y, double k) {
   if (k <= 0) return std::min(x, y);
   const double h = std::max(k - std::abs(x - y), 0.0) / k;
@@ -66,7 +82,11 @@ double smooth_min(double x, double y, double k) {
 
 double Field::distance(const Eigen::Vector3d& p) const {
   double d = primitives.empty() ? 1.0 : primitives.front().distance(p);
-  for (size_t i = 1; i < primitives.size(); ++i) d = smooth_min(d, primitives[i].distance(p), primitives[i].blend);
+  for (size_t i = 1; i < primitives.size(); ++i) {
+    const Primitive& q = primitives[i];
+    // A smooth difference is the smooth union of the complements: max(d, -e) = -min(-d, e).
+    d = q.carve ? -smooth_min(-d, q.distance(p), q.blend) : smooth_min(d, q.distance(p), q.blend);
+  }
   return d;
 }
 
@@ -85,6 +105,7 @@ int Field::nearest_primitive(const Eigen::Vector3d& p) const {
   int best = -1;
   double best_distance = 0;
   for (size_t i = 0; i < primitives.size(); ++i) {
+    if (primitives[i].carve) continue;
     const double d = primitives[i].distance(p);
     if (best < 0 || d < best_distance) best = static_cast<int>(i), best_distance = d;
   }

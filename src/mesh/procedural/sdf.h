@@ -20,8 +20,11 @@ struct Primitive {
   // kRoundCone
   Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();  ///< unit: m
   double radius_a = 0, radius_b = 0;                                         ///< unit: m
-  /// Blend radius with everything added before it (0: a hard union). unit: m
+  /// Blend radius with everything added before it (0: a hard union or cut). unit: m
   double blend = 0;
+  /// Carves this primitive out of everything added before it (a smooth difference):
+  /// notches, impressions, concave faces. A carving primitive owns no surface.
+  bool carve = false;
 
   double distance(const Eigen::Vector3d& p) const;  ///< unit: m (approximate for ellipsoids)
 };
@@ -30,6 +33,13 @@ Primitive ellipsoid(int part, const Eigen::Vector3d& center, const Eigen::Matrix
                     double blend);
 Primitive round_cone(int part, const Eigen::Vector3d& a, double radius_a, const Eigen::Vector3d& b, double radius_b,
                      double blend);
+
+/// Orthonormal axes whose first column points along `along`, the second as close to
+/// `towards` as it can (for ellipsoids aligned with a direction).
+Eigen::Matrix3d axes_along(const Eigen::Vector3d& along, const Eigen::Vector3d& towards);
+
+/// The same primitive, carving instead of adding (see Primitive::carve).
+Primitive carved(Primitive p);
 
 /// Polynomial smooth minimum: equals min(x, y) when they differ by more than k.
 double smooth_min(double x, double y, double k);
@@ -40,7 +50,7 @@ struct Field {
 
   double distance(const Eigen::Vector3d& p) const;  ///< unit: m
   Eigen::Vector3d gradient(const Eigen::Vector3d& p) const;  ///< Central differences. unit: 1
-  /// Index of the primitive whose own distance is least at p (the one that owns p).
+  /// Index of the adding primitive whose own distance is least at p (the one that owns p).
   int nearest_primitive(const Eigen::Vector3d& p) const;
 };
 
