@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "mesh/inspect.h"
 #include "mesh/organ.h"
 
 namespace systole::test {
@@ -46,16 +47,13 @@ inline mesh::TriangleMesh icosphere(double radius_m, int levels) {
   return m;
 }
 
-/// Geometry for sim::build_model: a closed surface with per-vertex regions.
-inline mesh::OrganGeometry geometry_of(const mesh::TriangleMesh& surface, std::vector<int> vertex_region,
-                                       bool closed = true) {
+/// Geometry for sim::build_model, inspected as the real pipeline does (so a broken
+/// surface gets no volume constraint), with per-vertex regions.
+inline mesh::OrganGeometry geometry_of(const mesh::TriangleMesh& surface, std::vector<int> vertex_region) {
   mesh::OrganGeometry g;
   g.mesh.surface = surface;
   g.vertex_region = std::move(vertex_region);
-  g.report.vertices = static_cast<int>(surface.positions.size());
-  g.report.triangles = static_cast<int>(surface.triangles.size());
-  g.report.boundary_edges = closed ? 0 : 1;
-  g.report.volume_m3 = 1.0;  // Only its sign matters to build_model.
+  g.report = mesh::inspect(surface);
   return g;
 }
 

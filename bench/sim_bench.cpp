@@ -1,0 +1,124 @@
+// Cost of one simulation step per solver on organs of about 2.5k, 10k and 40k vertices
+// (icospheres of a beating, volume-keeping body), in springs per second: compare with the
+// machine's limit of a plain spring loop (bench/spring_loop_bench.cpp's figure).
+//
+//   build/bench/sim_bench --benchmark_counters_tabular=true
+
+#include <benchmark/benchmark.h>
+
+#include <Eigen/Geometry>
+#include <map>
+
+#include "mesh/inspect.h"
+#include "sim/model.h"
+#include "sim/step.h"
+
+namespace {
+
+using namespace systole;
+
+/// An icosphere of radius 5 cm subdivided `levels` times (10 * 4^levels + 2 vertices).
+mesh::TriangleMesh icosphere(int levels) {
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<Eigen::Vector3d> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                                    {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<Eigen::Vector3i> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                    {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                    {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (auto& v : p) v.normalize();
+  for (int l = 0; l < levels; ++l) {
+    std::map<std::pair<int, int>, int> mid;
+    auto midpoint = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      if (auto it = mid.find(key); it != mid.end()) return it->second;
+      p.push_back((p[a] + p[b]).normalized());
+      return mid[key] = static_cast<int>(p.size()) - 1;
+    };
+    std::vector<Eigen::Vector3i> next;
+    for (const auto& tri : f) {
+      const int a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]), c = midpoint(tri[2], tri[0]);
+      next.insert(next.end(), {{tri[0], a, c}, {tri[1], b, a}, {tri[2], c, b}, {a, b, c}});
+    }
+    f = std::move(next);
+  }
+  mesh::TriangleMesh m;
+  for (auto& v : p) m.positions.push_back(0.05 * v);
+  m.triangles = f;
+  return m;
+}
+
+sim::Model beating_ball(int levels, scene::SolverMethod method, int substeps) {
+  mesh::OrganGeometry g;
+  g.mesh.surface = icosphere(levels);
+  g.report = mesh::inspect(g.mesh.surface);
+  g.vertex_region.resize(g.mesh.surface.positions.size());
+  for (std::size_t i = 0; i < g.vertex_region.size(); ++i) g.vertex_region[i] = g.mesh.surface.positions[i].y() > 0 ? 0 : -1;
+  scene::Organ organ;
+  organ.name = "ball";
+  organ.body.bending_N_per_m = 50;
+  scene::Region top;
+  top.name = "top";
+  top.drive.waveform = scene::Waveform::kCardiac;
+  top.drive.rate_hz = 1.2;
+  top.drive.amplitude = 0.12;
+  organ.regions.push_back(top);
+  sim::ModelOptions options;
+  options.solver.method = method;
+  options.solver.substeps = substeps;
+  options.clip_s = 10;
+  return sim::build_model(organ, g, options);
+}
+
+/// One step of 1/240 s; counters: springs solved per second, substeps per second.
+void step_cost(benchmark::State& bench, scene::SolverMethod method, int substeps) {
+  const sim::Model m = beating_ball(static_cast<int>(bench.range(0)), method, substeps);
+  sim::State s = sim::initial_state(m);
+  sim::step(m, s, 1.0 / 240);  // Warm: builds caches (the implicit factorization's pattern).
+  for (auto _ : bench) {
+    sim::step(m, s, 1.0 / 240);
+    benchmark::DoNotOptimize(s.x.data());
+  }
+  const double substeps_done = double(bench.iterations()) * m.substeps;
+  bench.counters["particles"] = m.particle_count();
+  bench.counters["springs"] = m.springs.size();
+  bench.counters["springs/s"] = benchmark::Counter(substeps_done * m.springs.size(), benchmark::Counter::kIsRate);
+  bench.counters["substeps/s"] = benchmark::Counter(substeps_done, benchmark::Counter::kIsRate);
+}
+
+void Xpbd(benchmark::State& s) { step_cost(s, scene::SolverMethod::kXpbd, 4); }
+void Explicit(benchmark::State& s) { step_cost(s, scene::SolverMethod::kExplicit, 4); }
+void Implicit(benchmark::State& s) { step_cost(s, scene::SolverMethod::kImplicit, 1); }
+
+// Levels 4, 5, 6: 2,562, 10,242 and 40,962 particles.
+BENCHMARK(Xpbd)->DenseRange(4, 6)->Unit(benchmark::kMillisecond);
+BENCHMARK(Explicit)->DenseRange(4, 6)->Unit(benchmark::kMillisecond);
+BENCHMARK(Implicit)->DenseRange(4, 6)->Unit(benchmark::kMillisecond);
+
+/// The machine's limit for this kind of work: a plain structure-of-arrays spring-force
+/// loop (no constraint solve, no drive), the figure DESIGN.md quotes as ~170 M springs/s.
+void SpringLoopLimit(benchmark::State& bench) {
+  const sim::Model m = beating_ball(static_cast<int>(bench.range(0)), scene::SolverMethod::kExplicit, 1);
+  const auto& sp = m.springs;
+  const Eigen::Matrix3Xd x = m.rest_positions * 1.01;
+  Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, x.cols());
+  const double* px = x.data();
+  double* pf = f.data();
+  for (auto _ : bench) {
+    for (int j = 0; j < sp.size(); ++j) {
+      const int a = sp.a[j], b = sp.b[j];
+      const double dx = px[3 * b] - px[3 * a], dy = px[3 * b + 1] - px[3 * a + 1], dz = px[3 * b + 2] - px[3 * a + 2];
+      const double len = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const double t = (len - sp.rest_m[j]) / (sp.compliance_m_per_N[j] * len);
+      pf[3 * a] += t * dx, pf[3 * a + 1] += t * dy, pf[3 * a + 2] += t * dz;
+      pf[3 * b] -= t * dx, pf[3 * b + 1] -= t * dy, pf[3 * b + 2] -= t * dz;
+    }
+    benchmark::DoNotOptimize(pf);
+  }
+  bench.counters["springs/s"] = benchmark::Counter(double(bench.iterations()) * sp.size(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(SpringLoopLimit)->DenseRange(4, 6)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

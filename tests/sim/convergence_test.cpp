@@ -1,0 +1,113 @@
+// The solvers integrate one model: as the step shrinks, each converges, and they converge
+// to the same motion.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/model.h"
+#include "sim/shapes.h"
+#include "sim/step.h"
+
+namespace systole::sim {
+namespace {
+
+using scene::SolverMethod;
+
+/// A heavy, soft, beating ball: slow enough that even the explicit solver runs at every
+/// step tried here, so all three can be compared on the same model.
+Model soft_ball(SolverMethod method, int substeps) {
+  const auto surface = test::icosphere(0.05, 2);
+  std::vector<int> region(surface.positions.size());
+  for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() > 0 ? 0 : -1;
+  scene::Organ organ;
+  organ.name = "ball";
+  organ.body.mass_kg = 1.0;
+  organ.body.stiffness_N_per_m = 50;
+  organ.body.damping_s = 0.002;
+  organ.body.volume_stiffness_Pa = 2000;
+  scene::Region top;
+  top.name = "top";
+  top.drive.waveform = scene::Waveform::kSine;
+  top.drive.rate_hz = 1.0;
+  top.drive.amplitude = 0.2;
+  organ.regions.push_back(top);
+  ModelOptions options;
+  options.solver.method = method;
+  options.solver.substeps = substeps;
+  options.clip_s = 10;
+  return build_model(organ, test::geometry_of(surface, region), options);
+}
+
+/// Positions at every 1/30 s over 1.5 s, stepping with substeps of `h`.
+std::vector<Eigen::Matrix3Xd> trajectory(SolverMethod method, double h) {
+  const double frame = 1.0 / 30;
+  const int substeps = static_cast<int>(std::lround(frame / h));
+  const Model m = soft_ball(method, substeps);
+  State s = initial_state(m);
+  std::vector<Eigen::Matrix3Xd> out;
+  for (int f = 0; f < 45; ++f) {
+    step(m, s, frame);
+    EXPECT_FALSE(diagnose(m, s).has_value());
+    out.push_back(s.x);
+  }
+  return out;
+}
+
+/// RMS distance between two trajectories. unit: m
+double rms_error(const std::vector<Eigen::Matrix3Xd>& a, const std::vector<Eigen::Matrix3Xd>& b) {
+  double sum = 0;
+  long n = 0;
+  for (std::size_t f = 0; f < a.size(); ++f) {
+    sum += (a[f] - b[f]).colwise().squaredNorm().sum();
+    n += a[f].cols();
+  }
+  return std::sqrt(sum / double(n));
+}
+
+/// RMS displacement from rest: the size of the motion the errors are measured against. unit: m
+double rms_motion(const std::vector<Eigen::Matrix3Xd>& a, const Eigen::Matrix3Xd& rest) {
+  double sum = 0;
+  long n = 0;
+  for (const auto& x : a) {
+    sum += (x - rest).colwise().squaredNorm().sum();
+    n += x.cols();
+  }
+  return std::sqrt(sum / double(n));
+}
+
+const char* name_of(SolverMethod m) {
+  return m == SolverMethod::kXpbd ? "xpbd" : m == SolverMethod::kExplicit ? "explicit" : "implicit";
+}
+
+class Convergence : public ::testing::TestWithParam<SolverMethod> {};
+
+TEST_P(Convergence, ErrorShrinksWithTheStep) {
+  const SolverMethod method = GetParam();
+  const double h0 = 1.0 / 600;
+  const auto reference = trajectory(method, h0 / 16);
+  double previous = 1e9;
+  for (double h : {h0, h0 / 2, h0 / 4}) {
+    const double e = rms_error(trajectory(method, h), reference);
+    EXPECT_LT(e, 0.8 * previous) << name_of(method) << ": error at h = " << h << " s did not shrink";
+    previous = e;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, Convergence,
+                         ::testing::Values(SolverMethod::kXpbd, SolverMethod::kExplicit, SolverMethod::kImplicit),
+                         [](const auto& info) { return std::string(name_of(info.param)); });
+
+TEST(Convergence, AllSolversApproachTheSameMotion) {
+  const double h = 1.0 / 9600;
+  const auto xpbd = trajectory(SolverMethod::kXpbd, h);
+  const auto explicit_euler = trajectory(SolverMethod::kExplicit, h);
+  const auto implicit = trajectory(SolverMethod::kImplicit, h);
+  const double motion = rms_motion(explicit_euler, soft_ball(SolverMethod::kExplicit, 1).rest_positions);
+  ASSERT_GT(motion, 1e-3) << "the ball moves";
+  EXPECT_LT(rms_error(xpbd, explicit_euler), 0.05 * motion);
+  EXPECT_LT(rms_error(implicit, explicit_euler), 0.05 * motion);
+}
+
+}  // namespace
+}  // namespace systole::sim
