@@ -148,6 +148,7 @@ struct Solver {
   bool auto_dt = false;        ///< Choose dt from the drive and stiffness (sim core issue).
   double dt_s = 1.0 / 240.0;   ///< Step size. unit: s
   int substeps = 4;            ///< XPBD substeps per step. unit: 1
+  int threads = 1;             ///< Threads for the simulation's spring loops; the result is the same at any count.
   Origin origin;
 };
 

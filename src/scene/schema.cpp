@@ -557,6 +557,7 @@ ValueSpec<Solver> solver_spec() {
             &Solver::method, "XPBD with substeps, explicit mass-spring (symplectic Euler), or implicit Euler."),
       dt,
       field("substeps", whole<int>(1, 200), &Solver::substeps, "XPBD substeps per step."),
+      field("threads", whole<int>(1, 64), &Solver::threads, "Threads for the spring loops; frames are bit-identical at any count."),
   }, [](const Node& node, Solver& s, const std::string&, const Context&) { s.origin = node.origin; });
 }
 

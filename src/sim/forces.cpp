@@ -10,19 +10,26 @@ namespace systole::sim {
 void internal_and_scripted_forces(const Model& model, const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v,
                                   double t, State& state, Eigen::Matrix3Xd& f) {
   f.setZero();
+  // Colour by colour, a colour's springs in parallel: no two touch one particle, so each
+  // particle's sum is accumulated in the same order whatever the thread count.
   const Springs& sp = model.springs;
-  for (int j = 0; j < sp.size(); ++j) {
-    const int a = sp.a[j], b = sp.b[j];
-    const Eigen::Vector3d d = x.col(b) - x.col(a);
-    const double len = d.norm();
-    if (len < 1e-12) continue;
-    const Eigen::Vector3d n = d / len;
-    const double k = 1.0 / sp.compliance_m_per_N[j];
-    const double c = k * sp.damping_s[j];
-    // Hooke spring plus a damper along the spring: it resists stretching speed only.
-    const double tension = k * (len - driven_rest_length(sp, j, state.region_contraction)) + c * n.dot(v.col(b) - v.col(a));
-    f.col(a) += tension * n;
-    f.col(b) -= tension * n;
+  for (int color = 0; color < sp.colors(); ++color) {
+    const int begin = sp.color_begin[color], end = sp.color_begin[color + 1];
+#pragma omp parallel for num_threads(model.threads) schedule(static) if (model.threads > 1 && end - begin > 512)
+    for (int j = begin; j < end; ++j) {
+      const int a = sp.a[j], b = sp.b[j];
+      const Eigen::Vector3d d = x.col(b) - x.col(a);
+      const double len = d.norm();
+      if (len < 1e-12) continue;
+      const Eigen::Vector3d n = d / len;
+      const double k = 1.0 / sp.compliance_m_per_N[j];
+      const double c = k * sp.damping_s[j];
+      // Hooke spring plus a damper along the spring: it resists stretching speed only.
+      const double tension =
+          k * (len - driven_rest_length(sp, j, state.region_contraction)) + c * n.dot(v.col(b) - v.col(a));
+      f.col(a) += tension * n;
+      f.col(b) -= tension * n;
+    }
   }
   if (model.volume.enabled) {
     // Pressure from the volume energy E = (K / 2V0) (V - V0)^2: f = -(V - V0) / compliance * dV/dx.

@@ -118,6 +118,7 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
   m.name = organ.name;
   m.method = options.solver.method;
   m.substeps = options.solver.substeps;
+  m.threads = options.solver.threads;
   m.gravity = options.gravity;
   m.drag_per_s = organ.body.drag_per_s;
   m.ramp_s = options.clip_s;

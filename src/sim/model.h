@@ -73,6 +73,7 @@ struct Model {
   std::string name;                         ///< The organ's name, for messages.
   scene::SolverMethod method = scene::SolverMethod::kXpbd;
   int substeps = 4;
+  int threads = 1;                          ///< Threads for the spring loops (same result at any count).
   Eigen::Matrix3Xd rest_positions;          ///< unit: m
   Eigen::VectorXd inverse_mass;             ///< unit: 1/kg; 0 = pinned.
   Springs springs;

@@ -32,25 +32,30 @@ double solve_distance(double* xa, double* xb, const double* da, const double* db
 
 namespace {
 
+/// All springs, colour by colour. Springs of one colour share no particle, so a colour's
+/// springs run on model.threads threads with the same result as in order: determinism does
+/// not depend on the thread count.
 void solve_springs(const Model& model, State& s, double h) {
   const Springs& sp = model.springs;
   const double* w = model.inverse_mass.data();
   double* x = s.x.data();
   const double* xp = s.x_prev.data();
   const double inv_h2 = 1.0 / (h * h);
-  double d_a[3], d_b[3];
-  for (int j = 0; j < sp.size(); ++j) {
-    const int a = sp.a[j], b = sp.b[j];
-    const double ca = sp.region_a[j] >= 0 ? s.region_contraction[sp.region_a[j]] : 0.0;
-    const double cb = sp.region_b[j] >= 0 ? s.region_contraction[sp.region_b[j]] : 0.0;
-    const double rest = sp.rest_m[j] * (1.0 - 0.5 * (ca + cb));
-    for (int k = 0; k < 3; ++k) {
-      d_a[k] = x[3 * a + k] - xp[3 * a + k];
-      d_b[k] = x[3 * b + k] - xp[3 * b + k];
+  for (int color = 0; color < sp.colors(); ++color) {
+    const int begin = sp.color_begin[color], end = sp.color_begin[color + 1];
+#pragma omp parallel for num_threads(model.threads) schedule(static) if (model.threads > 1 && end - begin > 512)
+    for (int j = begin; j < end; ++j) {
+      const int a = sp.a[j], b = sp.b[j];
+      double d_a[3], d_b[3];
+      for (int k = 0; k < 3; ++k) {
+        d_a[k] = x[3 * a + k] - xp[3 * a + k];
+        d_b[k] = x[3 * b + k] - xp[3 * b + k];
+      }
+      const double alpha_tilde = sp.compliance_m_per_N[j] * inv_h2;
+      const double gamma = sp.damping_s[j] / h;
+      s.spring_lambda[j] += solve_distance(x + 3 * a, x + 3 * b, d_a, d_b, w[a], w[b],
+                                           driven_rest_length(sp, j, s.region_contraction), alpha_tilde, gamma);
     }
-    const double alpha_tilde = sp.compliance_m_per_N[j] * inv_h2;
-    const double gamma = sp.damping_s[j] / h;
-    s.spring_lambda[j] += solve_distance(x + 3 * a, x + 3 * b, d_a, d_b, w[a], w[b], rest, alpha_tilde, gamma);
   }
 }
 

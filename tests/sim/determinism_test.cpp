@@ -1,0 +1,75 @@
+// The same model and inputs give a bit-identical State at 1 and 2 threads, for every solver.
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "sim/model.h"
+#include "sim/shapes.h"
+#include "sim/step.h"
+
+namespace systole::sim {
+namespace {
+
+using scene::SolverMethod;
+
+Model ball(SolverMethod method, int threads) {
+  const auto surface = test::icosphere(0.05, 4);  // 2,562 particles: colours big enough to split.
+  std::vector<int> region(surface.positions.size());
+  for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() > 0 ? 0 : -1;
+  scene::Organ organ;
+  organ.name = "ball";
+  organ.body.bending_N_per_m = 50;
+  organ.body.stiffness_N_per_m = 100;  // Soft and lightly damped, so 100 us explicit substeps are stable.
+  organ.body.damping_s = 0.0005;
+  scene::Region top;
+  top.name = "top";
+  top.drive.waveform = scene::Waveform::kCardiac;
+  top.drive.rate_hz = 1.2;
+  top.drive.amplitude = 0.12;
+  organ.regions.push_back(top);
+  ModelOptions options;
+  options.solver.method = method;
+  options.solver.substeps = method == SolverMethod::kExplicit ? 40 : method == SolverMethod::kXpbd ? 4 : 1;
+  options.solver.threads = threads;
+  options.clip_s = 10;
+  return build_model(organ, test::geometry_of(surface, region), options);
+}
+
+State run(const Model& m, int steps) {
+  State s = initial_state(m);
+  for (int i = 0; i < steps; ++i) step(m, s, 1.0 / 240);
+  return s;
+}
+
+bool same_bits(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+}
+
+const char* name_of(SolverMethod m) {
+  return m == SolverMethod::kXpbd ? "xpbd" : m == SolverMethod::kExplicit ? "explicit" : "implicit";
+}
+
+class ThreadDeterminism : public ::testing::TestWithParam<SolverMethod> {};
+
+TEST_P(ThreadDeterminism, OneAndTwoThreadsGiveTheSameBits) {
+  const Model one = ball(GetParam(), 1), two = ball(GetParam(), 2);
+  int largest_colour = 0;
+  for (int c = 0; c < one.springs.colors(); ++c)
+    largest_colour = std::max(largest_colour, one.springs.color_begin[c + 1] - one.springs.color_begin[c]);
+  ASSERT_GT(largest_colour, 512) << "colours must be large enough to be split between threads";
+
+  const int steps = 12;  // 50 ms: into the first contraction.
+  const State a = run(one, steps), b = run(two, steps), c = run(two, steps);
+  EXPECT_GT((a.x - one.rest_positions).cwiseAbs().maxCoeff(), 1e-6) << "the body moved";
+  EXPECT_TRUE(same_bits(a.x, b.x)) << "positions at 1 and 2 threads";
+  EXPECT_TRUE(same_bits(a.v, b.v)) << "velocities at 1 and 2 threads";
+  EXPECT_TRUE(same_bits(b.x, c.x)) << "two runs at 2 threads";
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, ThreadDeterminism,
+                         ::testing::Values(SolverMethod::kXpbd, SolverMethod::kExplicit, SolverMethod::kImplicit),
+                         [](const auto& info) { return std::string(name_of(info.param)); });
+
+}  // namespace
+}  // namespace systole::sim
