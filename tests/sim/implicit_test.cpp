@@ -1,10 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-#include <chrono>
 #include <cmath>
 #include <complex>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <utility>
@@ -309,35 +307,6 @@ TEST(Implicit, GrabPullsItsPatchTowardsTheHandle) {
   rest /= double(m.grabs[0].particles.size());
   EXPECT_GT(centre.x() - rest.x(), 0.5 * 0.02) << "the patch follows the handle most of the way";
   EXPECT_LT(std::abs(centre.y() - rest.y()) + std::abs(centre.z() - rest.z()), 0.005);
-}
-
-/// Cost of the implicit step on icospheres of 2.5k, 10k and 40k particles. Prints figures;
-/// run with SYSTOLE_BENCH=1.
-TEST(ImplicitBench, CostPerStep) {
-  if (std::getenv("SYSTOLE_BENCH") == nullptr) GTEST_SKIP() << "set SYSTOLE_BENCH=1";
-  for (int levels : {4, 5, 6}) {
-    // The default step (1/240 s in 4 substeps) and the implicit solver's use: a frame per step.
-    for (const auto& [dt, substeps] : {std::pair{1.0 / 240, 4}, std::pair{1.0 / 30, 1}}) {
-      Ball ball(1.2, 0.15, levels);
-      ball.solver.substeps = substeps;
-      const Model m = ball.model();
-      State s = initial_state(m);
-      step(m, s, dt);  // Builds the cache.
-      const long solves0 = s.implicit.get()->solves, iterations0 = s.implicit.get()->cg_iterations;
-      const int steps = (levels >= 6 ? 4 : 20) / substeps;
-      const auto start = std::chrono::steady_clock::now();
-      for (int i = 0; i < steps; ++i) step(m, s, dt);
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const ImplicitCache& c = *s.implicit.get();
-      const double per_substep = seconds / (steps * m.substeps);
-      std::printf("particles %6d springs %6d dt 1/%3.0f x%d substeps: %7.2f ms/substep, %.3g springs/s, "
-                  "%.1f CG iterations/solve, %ld unconverged\n",
-                  m.particle_count(), m.springs.size(), 1 / dt, m.substeps, 1e3 * per_substep,
-                  m.springs.size() / per_substep,
-                  double(c.cg_iterations - iterations0) / double(c.solves - solves0), c.unconverged_solves);
-      std::fflush(stdout);
-    }
-  }
 }
 
 }  // namespace
