@@ -170,9 +170,9 @@ TEST(Scenes, InfarctBarelyMovesWhileItsNeighboursDo) {
     }
   }
   ASSERT_FALSE(ring.empty());
-  // Motion: how much each patch's own tissue shortens - the mean length of the surface
-  // edges inside it over the second beat, (longest - shortest) / longest - and how far it
-  // travels (mean displacement from the beat's start), carried by the rest of the heart.
+  // Motion over the second beat: how much each patch's own tissue shortens (the mean
+  // length of the surface edges inside it, (longest - shortest) / longest), and how far its
+  // wall moves in and out.
   std::vector<char> in_scar(static_cast<size_t>(m.particle_count()), 0), in_ring(in_scar.size(), 0);
   for (int i : scar) in_scar[static_cast<size_t>(i)] = 1;
   for (int i : ring) in_ring[static_cast<size_t>(i)] = 1;
@@ -190,31 +190,35 @@ TEST(Scenes, InfarctBarelyMovesWhileItsNeighboursDo) {
     for (const auto& [a, b] : edges) sum += (heart.state.x.col(a) - heart.state.x.col(b)).norm();
     return sum / static_cast<double>(edges.size());
   };
-  auto mean_displacement = [&](const std::vector<int>& patch, const Eigen::Matrix3Xd& from) {
+  // Wall motion as echocardiography grades it: how far the patch moves towards the
+  // heart's centre and back (its mean distance to the centroid, max - min over a beat).
+  auto mean_radius = [&](const std::vector<int>& patch) {
+    const Eigen::Vector3d centre = heart.state.x.rowwise().mean();
     double sum = 0;
-    for (int i : patch) sum += (heart.state.x.col(i) - from.col(i)).norm();
+    for (int i : patch) sum += (heart.state.x.col(i) - centre).norm();
     return sum / static_cast<double>(patch.size());
   };
   const double beat_s = 60.0 / 72.0;
   step_until(w, heart, beat_s);
-  const Eigen::Matrix3Xd start = heart.state.x;
-  double scar_lo = 1e9, scar_hi = 0, ring_lo = 1e9, ring_hi = 0, scar_move = 0, ring_move = 0;
+  double scar_lo = 1e9, scar_hi = 0, ring_lo = 1e9, ring_hi = 0;
+  double scar_r_lo = 1e9, scar_r_hi = 0, ring_r_lo = 1e9, ring_r_hi = 0;
   while (heart.state.time_s < 2 * beat_s) {
     sim::step(m, heart.state, w.dt_s);
     const double s = mean_length(scar_edges), r = mean_length(ring_edges);
     scar_lo = std::min(scar_lo, s), scar_hi = std::max(scar_hi, s);
     ring_lo = std::min(ring_lo, r), ring_hi = std::max(ring_hi, r);
-    scar_move = std::max(scar_move, mean_displacement(scar, start));
-    ring_move = std::max(ring_move, mean_displacement(ring, start));
+    const double sr = mean_radius(scar), rr = mean_radius(ring);
+    scar_r_lo = std::min(scar_r_lo, sr), scar_r_hi = std::max(scar_r_hi, sr);
+    ring_r_lo = std::min(ring_r_lo, rr), ring_r_hi = std::max(ring_r_hi, rr);
   }
   const double scar_strain = (scar_hi - scar_lo) / scar_hi, ring_strain = (ring_hi - ring_lo) / ring_hi;
-  std::printf("[ infarct  ] %zu scar vertices, %zu neighbours: edges shorten %.1f%% vs %.1f%%, displacement %.1f vs %.1f mm\n",
+  const double scar_move = scar_r_hi - scar_r_lo, ring_move = ring_r_hi - ring_r_lo;
+  std::printf("[ infarct  ] %zu scar vertices, %zu neighbours: edges shorten %.1f%% vs %.1f%%, inward motion %.2f vs %.2f mm\n",
               scar.size(), ring.size(), 100 * scar_strain, 100 * ring_strain, 1e3 * scar_move, 1e3 * ring_move);
-  // The scar's edges still shorten a little: the contracting wall around it compresses it
-  // (XPBD's few projections per substep bound how rigid a stiff patch can be). Its own
-  // shortening is under half its neighbours'.
-  EXPECT_LT(scar_strain, 0.5 * ring_strain);
-  EXPECT_LT(scar_move, ring_move);
+  // The scar's edges still shorten a little (the contracting wall around it compresses it),
+  // but far less than its neighbours': measured 2.0% against 9.8%.
+  EXPECT_LT(scar_strain, 0.3 * ring_strain);
+  EXPECT_LT(scar_move, 0.6 * ring_move) << "the scar's wall barely moves inwards";
 }
 
 TEST(Scenes, AfibIsIrregularAndRepeats) {
