@@ -55,6 +55,13 @@ struct Drive {
   double irregularity = 0;          ///< Seeded beat-to-beat jitter of the period (0 = regular). unit: 1
 };
 
+/// A position at a time: a key of a grab's handle path or of a kinematic region's motion,
+/// interpolated smoothly (Catmull-Rom) between keys and held outside them.
+struct PathKey {
+  double time_s = 0;                                   ///< unit: s
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< unit: m
+};
+
 // ---------------------------------------------------------------------------------------
 // Regions: parts of an organ's surface with their own rhythm and stiffness.
 
@@ -87,6 +94,9 @@ struct Region {
   double stiffness_scale = 1;  ///< Multiplies the body's stiffness. unit: 1
   double damping_scale = 1;    ///< Multiplies the body's damping. unit: 1
   bool pinned = false;         ///< Fixed in place: costs nothing in the solve.
+  /// Pinned regions only: offsets from the rest position over time (a kinematic region,
+  /// e.g. a vessel stub moved by breathing). Empty: the region stays at rest.
+  std::vector<PathKey> motion;
   bool has_color = false;
   Color color = Color(0.8, 0.3, 0.3);  ///< Used when has_color; else the organ's material.
   Origin origin;
@@ -185,12 +195,6 @@ struct Output {
 enum class InteractionKind {
   kPoke,  ///< A force on the vertices near a point, over an interval.
   kGrab,  ///< The vertices near a point follow a handle along a path, then are let go.
-};
-
-/// A handle position at a time: key of a grab's path.
-struct PathKey {
-  double time_s = 0;                                   ///< unit: s
-  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< unit: m
 };
 
 struct Interaction {

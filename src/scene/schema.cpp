@@ -466,6 +466,21 @@ ValueSpec<Drive> drive_spec() {
   });
 }
 
+/// A list of {time, position} keys with increasing times.
+ValueSpec<std::vector<PathKey>> path_keys(std::string position_doc) {
+  auto key = map<PathKey>({
+      field("time", quantity(Dimension::kTime, closed(0, 3600)), &PathKey::time_s, "When the point is here.").required(),
+      field("position", vec3(Dimension::kLength), &PathKey::position_m, std::move(position_doc)).required(),
+  });
+  return list(key, 1, 1024, "list of path keys").also(
+      [](const std::vector<PathKey>& keys) {
+        for (std::size_t i = 1; i < keys.size(); ++i)
+          if (keys[i].time_s <= keys[i - 1].time_s) return "times must increase (key " + std::to_string(i) + ")";
+        return std::string();
+      },
+      "1..1024 keys, times increasing");
+}
+
 ValueSpec<Region> region_spec() {
   return map<Region>({
       field("name", name_text(), &Region::name, "Unique within the organ; also the default part to select.").required(),
@@ -474,9 +489,15 @@ ValueSpec<Region> region_spec() {
       field("stiffness", number(open_closed(0, 1e6)), &Region::stiffness_scale, "Multiplies the body's stiffness."),
       field("damping", number(closed(0, 1e6)), &Region::damping_scale, "Multiplies the body's damping."),
       field("pinned", boolean(), &Region::pinned, "Fixed in place (valves, vessel stumps)."),
+      field("motion", path_keys("Offset of the region from its rest position."), &Region::motion,
+            "Pinned regions: a prescribed motion (a kinematic region), smoothly interpolated, held after the last key."),
       field<Region, Color>("color", color(), [](Region& r) -> Color& { r.has_color = true; return r.color; },
             "Colour of the region; else the organ's material colour.").shown_default("material color"),
-  }, [](const Node& node, Region& r, const std::string&, const Context&) { r.origin = node.origin; });
+  }, [](const Node& node, Region& r, const std::string& path, const Context&) {
+    r.origin = node.origin;
+    if (!r.motion.empty() && !r.pinned)
+      fail(origin_of(node, "motion"), join(path, "motion"), "a prescribed motion needs pinned: true (the region is moved, not simulated)");
+  });
 }
 
 ValueSpec<MeshSource> mesh_spec() {
@@ -562,10 +583,6 @@ ValueSpec<Solver> solver_spec() {
 }
 
 ValueSpec<Interaction> interaction_spec() {
-  auto key = map<PathKey>({
-      field("time", quantity(Dimension::kTime, closed(0, 3600)), &PathKey::time_s, "When the handle is here.").required(),
-      field("position", vec3(Dimension::kLength), &PathKey::position_m, "Where the handle is.").required(),
-  });
   auto common = [](std::vector<Field<Interaction>> extra) {
     std::vector<Field<Interaction>> fields = {
         field("organ", name_text(), &Interaction::organ, "Name of the organ touched.").required(),
@@ -582,14 +599,10 @@ ValueSpec<Interaction> interaction_spec() {
       field("drive", drive_spec(), &Interaction::drive, "When given, the force is scaled by the drive's phi(t) all clip long instead (a periodic push: the diaphragm on the liver); start and duration are then unused."),
   }));
   auto grab = map<Interaction>(common({
-      field("path", list(key, 1, 1024, "list of path keys"), &Interaction::path,
+      field("path", path_keys("Where the handle is."), &Interaction::path,
             "Handle positions at increasing times; the patch follows from the first key and is let go after the last.").required(),
       field("stiffness", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Interaction::stiffness_N_per_m, "Stiffness holding each vertex to the handle."),
-  }), [](const Node& node, Interaction& g, const std::string& path, const Context&) {
-    for (std::size_t i = 1; i < g.path.size(); ++i)
-      if (g.path[i].time_s <= g.path[i - 1].time_s)
-        fail(node.find("path")->items[i].origin, path + ".path[" + std::to_string(i) + "].time", "path times must increase");
-  });
+  }));
   return map<Interaction>({
       field<Interaction, Interaction>("poke", poke, [](Interaction& i) -> Interaction& { i.kind = InteractionKind::kPoke; return i; },
             "Push the vertices near `at` with `force` from `start` for `duration`."),

@@ -23,6 +23,7 @@ void explicit_step(const Model& model, State& s, double dt_s) {
     }
     s.x_prev = s.x;
     s.x += h * s.v;
+    move_kinematic_regions(model, s.time_s + h, s.x);
     if (model.floor.enabled) {
       resolve_floor_contact(model, s.x);
       s.v = (s.x - s.x_prev) / h;  // The contact removed the motion into the floor.

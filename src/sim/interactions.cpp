@@ -6,8 +6,7 @@
 
 namespace systole::sim {
 
-Eigen::Vector3d handle_position(const Grab& grab, double t) {
-  const auto& p = grab.path;
+Eigen::Vector3d path_position(const std::vector<scene::PathKey>& p, double t) {
   if (p.size() == 1 || t <= p.front().time_s) return p.front().position_m;
   if (t >= p.back().time_s) return p.back().position_m;
   const auto next = std::upper_bound(p.begin(), p.end(), t, [](double v, const scene::PathKey& k) { return v < k.time_s; });
@@ -24,6 +23,13 @@ Eigen::Vector3d handle_position(const Grab& grab, double t) {
 double poke_factor(const Poke& poke, double t, double ramp_s) {
   if (poke.drive.waveform != scene::Waveform::kNone) return activation(poke.drive, t, ramp_s);
   return t >= poke.start_s && t < poke.end_s ? 1.0 : 0.0;
+}
+
+void move_kinematic_regions(const Model& model, double t, Eigen::Matrix3Xd& x) {
+  for (const KinematicRegion& k : model.kinematic) {
+    const Eigen::Vector3d offset = path_position(k.motion, t);
+    for (int i : k.particles) x.col(i) = model.rest_positions.col(i) + offset;
+  }
 }
 
 bool grab_active(const Grab& grab, double t) { return t >= grab.path.front().time_s && t <= grab.path.back().time_s; }

@@ -7,9 +7,15 @@
 
 namespace systole::sim {
 
-/// The grab's handle at time t: a Catmull-Rom curve through the path keys (smooth, passing
-/// through every key), clamped to the first and last key outside them. unit: m
-Eigen::Vector3d handle_position(const Grab& grab, double t_s);
+/// A path at time t: a Catmull-Rom curve through the keys (smooth, passing through every
+/// key), held at the first and last key outside them. unit: m
+Eigen::Vector3d path_position(const std::vector<scene::PathKey>& path, double t_s);
+
+/// The grab's handle at time t. unit: m
+inline Eigen::Vector3d handle_position(const Grab& grab, double t_s) { return path_position(grab.path, t_s); }
+
+/// Puts the particles of kinematic regions where their prescribed motion has them at time t.
+void move_kinematic_regions(const Model& model, double t_s, Eigen::Matrix3Xd& x);
 
 /// Whether the grab holds its patch at time t: from the first key to the last.
 bool grab_active(const Grab& grab, double t_s);

@@ -148,6 +148,14 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
     const int r = region_of(i);
     if (r >= 0 && m.regions[r].pinned) m.inverse_mass[i] = 0;
   }
+  for (std::size_t r = 0; r < m.regions.size(); ++r) {
+    if (m.regions[r].motion.empty()) continue;
+    KinematicRegion k;
+    k.motion = m.regions[r].motion;
+    for (int i = 0; i < n; ++i)
+      if (region_of(i) == static_cast<int>(r)) k.particles.push_back(i);
+    m.kinematic.push_back(std::move(k));
+  }
 
   // Springs on every surface edge, then (when asked for) bending springs across every
   // interior edge; a spring between two pinned particles does nothing and is not built.

@@ -58,6 +58,13 @@ struct Grab {
   double compliance_m_per_N = 0;           ///< unit: m/N
 };
 
+/// A pinned region that moves along a prescribed path: its particles are placed, not
+/// simulated (inverse mass 0), and pull their neighbours along through the springs.
+struct KinematicRegion {
+  std::vector<int> particles;
+  std::vector<scene::PathKey> motion;  ///< Offsets from the rest positions over time.
+};
+
 /// What a model is built with besides the organ: the scene's solver, world and timeline.
 struct ModelOptions {
   scene::Solver solver;
@@ -88,6 +95,7 @@ struct Model {
   double rest_extent_m = 0;                 ///< Bounding-box diagonal of the rest shape. unit: m
   std::vector<Poke> pokes;
   std::vector<Grab> grabs;
+  std::vector<KinematicRegion> kinematic;
   scene::Floor floor;
 
   int particle_count() const { return static_cast<int>(rest_positions.cols()); }

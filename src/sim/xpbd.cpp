@@ -122,6 +122,7 @@ void xpbd_step(const Model& model, State& s, double dt_s) {
     }
     s.x_prev = s.x;
     s.x += h * s.v;
+    move_kinematic_regions(model, t_end, s.x);
     region_contractions(model.regions, model.beat_boundaries, t_end, model.ramp_s, s.region_contraction);
     s.spring_lambda.setZero();
     s.volume_lambda = 0;

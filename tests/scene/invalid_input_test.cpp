@@ -17,9 +17,9 @@ std::string with_organ_keys(const std::string& organ_lines) {
 TEST(SceneInvalid, UnknownKeyNamesPlaceAndSuggestsTheClosestKey) {
   const auto f = load_error(with_organ_keys("    body:\n      stifness: 400 N/m\n"));
   EXPECT_EQ(f.code, ExitCode::kDataError);
-  EXPECT_EQ(f.message,
-            "scenes/test.yaml:5:7: organs[0].body: unknown key 'stifness' (did you mean 'stiffness'?); "
-            "allowed keys: mass, stiffness, damping, volume_stiffness, drag, bending, volume_drive");
+  // The allowed keys are listed (the whole list grows with the schema; the docs test
+  // checks it).
+  EXPECT_EQ(f.message.rfind("scenes/test.yaml:5:7: organs[0].body: unknown key \'stifness\' (did you mean \'stiffness\'?); allowed keys: mass, stiffness, damping, ", 0), 0u) << f.message;
 }
 
 TEST(SceneInvalid, UnknownTopLevelKeyWithoutCloseMatchHasNoSuggestion) {

@@ -59,8 +59,9 @@ TEST(SceneOverrides, ValueIsValidatedAndNamedAsTheOrigin) {
 
 TEST(SceneOverrides, UnknownKeyGetsTheUnknownKeyMessage) {
   const auto f = load_error(kTwoOrgans, {"organs.heart.body.stifness=1"});
-  EXPECT_EQ(f.message, "-D organs.heart.body.stifness=1: organs[0].body: unknown key 'stifness' (did you mean 'stiffness'?); "
-                       "allowed keys: mass, stiffness, damping, volume_stiffness, drag, bending, volume_drive");
+  // The allowed keys are listed (the whole list grows with the schema; the docs test
+  // checks it).
+  EXPECT_EQ(f.message.rfind("-D organs.heart.body.stifness=1: organs[0].body: unknown key \'stifness\' (did you mean \'stiffness\'?); allowed keys: mass, stiffness, damping, ", 0), 0u) << f.message;
 }
 
 TEST(SceneOverrides, MissingItemsAreErrors) {
