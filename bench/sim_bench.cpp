@@ -6,9 +6,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include <Eigen/Geometry>
-#include <map>
 
+#include "mesh/icosphere.h"
 #include "mesh/inspect.h"
 #include "sim/model.h"
 #include "sim/step.h"
@@ -17,40 +16,9 @@ namespace {
 
 using namespace systole;
 
-/// An icosphere of radius 5 cm subdivided `levels` times (10 * 4^levels + 2 vertices).
-mesh::TriangleMesh icosphere(int levels) {
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                    {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  std::vector<Eigen::Vector3i> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                    {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                    {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (auto& v : p) v.normalize();
-  for (int l = 0; l < levels; ++l) {
-    std::map<std::pair<int, int>, int> mid;
-    auto midpoint = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      if (auto it = mid.find(key); it != mid.end()) return it->second;
-      p.push_back((p[a] + p[b]).normalized());
-      return mid[key] = static_cast<int>(p.size()) - 1;
-    };
-    std::vector<Eigen::Vector3i> next;
-    for (const auto& tri : f) {
-      const int a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]), c = midpoint(tri[2], tri[0]);
-      next.insert(next.end(), {{tri[0], a, c}, {tri[1], b, a}, {tri[2], c, b}, {a, b, c}});
-    }
-    f = std::move(next);
-  }
-  mesh::TriangleMesh m;
-  for (auto& v : p) m.positions.push_back(0.05 * v);
-  m.triangles = f;
-  return m;
-}
-
 sim::Model beating_ball(int levels, scene::SolverMethod method, int substeps) {
   mesh::OrganGeometry g;
-  g.mesh.surface = icosphere(levels);
+  g.mesh.surface = mesh::icosphere(0.05, levels);  // 10 * 4^levels + 2 particles.
   g.report = mesh::inspect(g.mesh.surface);
   g.vertex_region.resize(g.mesh.surface.positions.size());
   for (std::size_t i = 0; i < g.vertex_region.size(); ++i) g.vertex_region[i] = g.mesh.surface.positions[i].y() > 0 ? 0 : -1;
