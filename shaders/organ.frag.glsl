@@ -8,7 +8,10 @@
 //  - a subtle rim light that keeps the silhouette readable against a dark background.
 // Output is encoded to sRGB here, so the framebuffer is plain 8-bit sRGB.
 
-const int kMaxLights = 8;         // keep equal to render::kMaxLights
+// LIGHT_COUNT (0..8, render::kMaxLights) is defined by the renderer, which compiles one
+// program per count: a constant loop bound unrolls, a uniform one costs llvmpipe 2.4x the draw.
+const int kLightCount = LIGHT_COUNT;
+const int kLightArraySize = kLightCount > 0 ? kLightCount : 1;  // GLSL has no empty arrays.
 const float kWrap = 0.3;         // how far light wraps past the terminator, unit: 1 (of N.L)
 const float kRim = 0.07;         // rim light strength, unit: 1
 const float kWetShare = 0.6;     // the glint's share of the material's specular, unit: 1
@@ -18,9 +21,8 @@ in vec3 v_normal;
 in vec3 v_albedo;
 
 uniform vec3 u_camera_position;               // world space, metres
-uniform int u_light_count;
-uniform vec3 u_light_to_light[kMaxLights];    // unit vector from the surface towards the light
-uniform vec3 u_light_radiance[kMaxLights];    // linear RGB x intensity
+uniform vec3 u_light_to_light[kLightArraySize];  // unit vector from the surface towards the light
+uniform vec3 u_light_radiance[kLightArraySize];  // linear RGB x intensity
 uniform vec3 u_up;                            // unit: the hemisphere's "sky" direction
 uniform vec3 u_sky;                           // linear RGB ambient from above
 uniform vec3 u_ground;                        // linear RGB ambient from below
@@ -46,7 +48,7 @@ void main() {
   float hemi = 0.5 + 0.5 * dot(n, u_up);
   vec3 color = albedo * mix(u_ground, u_sky, hemi);
 
-  for (int i = 0; i < u_light_count; ++i) {
+  for (int i = 0; i < kLightCount; ++i) {
     vec3 l = u_light_to_light[i];
     float n_dot_l = dot(n, l);
     float lambert = max(n_dot_l, 0.0);

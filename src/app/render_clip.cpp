@@ -2,17 +2,20 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <numeric>
 #include <vector>
 
 #include "app/frame_list.h"
+#include "app/frame_pipeline.h"
 #include "app/progress.h"
 #include "app/world.h"
 #include "common/error.h"
 #include "encode/mp4_writer.h"
 #include "encode/png.h"
 #include "mesh/normals.h"
+#include "render/fxaa.h"
 #include "render/renderer.h"
 
 namespace systole::app {
@@ -31,11 +34,20 @@ std::vector<scene::Color> vertex_colors(const scene::Organ& organ, const std::ve
   return colors;
 }
 
-/// Per-organ buffers handed to the renderer each frame (allocated once).
+/// One organ's surface for one frame, as the renderer takes it (allocated once per slot).
 struct SurfaceBuffers {
-  int id = 0;
-  std::vector<float> positions, normals;
+  std::vector<float> positions, normals;  ///< xyz per vertex. unit: m, 1
 };
+
+/// Frames in flight between two stages. Three: one being written, one being read, and one
+/// ready, so a stage that is briefly slower does not stall the other.
+constexpr int kPipelineDepth = 3;
+
+/// Threads the stages get, for the two-core machines we target (docs/performance.md):
+/// llvmpipe rasterizes on one thread of its own while the simulation and the encoder run
+/// beside it; more threads only contend for the same two cores.
+constexpr const char* kRasterizerThreads = "1";
+constexpr int kEncoderThreads = 1;
 
 /// The frames to render: the request's list checked against the clip, or every frame.
 std::vector<int> selected_frames(const RenderRequest& request, int frame_count) {
@@ -76,58 +88,81 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
   const int frame_count = out.frame_count();
   const std::vector<int> frames = selected_frames(request, frame_count);
   World world = build_world(scene);
-  render::Renderer renderer(out.width, out.height, out.antialias);
+  // Read when the process creates its first context; a value set by the caller wins.
+  setenv("LP_NUM_THREADS", kRasterizerThreads, /*overwrite=*/0);
+  const int msaa = out.antialias == scene::Antialias::kMsaa4 ? 4 : out.antialias == scene::Antialias::kMsaa2 ? 2 : 0;
+  render::Renderer renderer(out.width, out.height, msaa);
 
-  std::vector<SurfaceBuffers> surfaces(world.organs.size());
+  // slots[k][o]: organ o of the frame in slot k.
+  std::vector<std::vector<SurfaceBuffers>> slots(kPipelineDepth, std::vector<SurfaceBuffers>(world.organs.size()));
+  std::vector<int> surface_ids;
   for (std::size_t o = 0; o < world.organs.size(); ++o) {
     const auto& body = world.organs[o];
     const auto& organ = scene.organs[o];
-    surfaces[o].id = renderer.add_surface(body.geometry.mesh.surface.triangles,
-                                          vertex_colors(organ, body.geometry.vertex_region), organ.material);
-    surfaces[o].positions.resize(3 * body.model.particle_count());
-    surfaces[o].normals.resize(3 * body.model.particle_count());
+    surface_ids.push_back(renderer.add_surface(body.geometry.mesh.surface.triangles,
+                                               vertex_colors(organ, body.geometry.vertex_region), organ.material));
+    for (auto& slot : slots) {
+      slot[o].positions.resize(3 * body.geometry.mesh.surface.positions.size());
+      slot[o].normals.resize(3 * body.geometry.mesh.surface.positions.size());
+    }
   }
 
   // Sinks are opened before the first frame so a bad output path fails before any work.
   std::vector<std::unique_ptr<encode::FrameSink>> sinks;
   if (!request.video.empty()) {
-    encode::VideoSettings video{out.width, out.height, out.fps, out.crf, out.preset, 0};
+    encode::VideoSettings video{out.width, out.height, out.fps, out.crf, out.preset, kEncoderThreads};
     sinks.push_back(std::make_unique<encode::Mp4Writer>(request.video, video));
   }
   if (!request.png_dir.empty()) {
     sinks.push_back(std::make_unique<encode::PngSequenceWriter>(request.png_dir, frame_count));
   }
 
-  Image frame(out.width, out.height);
+  std::vector<Image> images(kPipelineDepth, Image(out.width, out.height));
+  render::Fxaa fxaa;
   Progress progress(scene.name, static_cast<int>(frames.size()), request.show_progress);
-  for (const int f : frames) {
+
+  // Each stage adds to its own times only (one thread each).
+  PipelineStages stages;
+  stages.produce = [&](int i, int slot) {
+    const int f = frames[static_cast<std::size_t>(i)];
     auto t0 = Clock::now();
     advance_to_frame(world, f);  // Steps through every frame in between.
-    times.simulate_s += seconds_since(t0);
-
-    t0 = Clock::now();
     for (std::size_t o = 0; o < world.organs.size(); ++o) {
-      const auto& body = world.organs[o];
-      auto& buf = surfaces[o];
-      const Eigen::Index n = body.state.x.cols();
-      const double* x = body.state.x.data();
-      for (Eigen::Index i = 0; i < 3 * n; ++i) buf.positions[i] = static_cast<float>(x[i]);
-      mesh::vertex_normals(x, static_cast<int>(n), body.geometry.mesh.surface.triangles, buf.normals.data());
-      renderer.update_surface(buf.id, buf.positions.data(), buf.normals.data());
+      auto& buf = slots[static_cast<std::size_t>(slot)][o];
+      const Eigen::Matrix3Xd& positions = world.organs[o].state.x;  // The positions source. unit: m
+      const Eigen::Index n = positions.cols();
+      const double* x = positions.data();
+      for (Eigen::Index k = 0; k < 3 * n; ++k) buf.positions[k] = static_cast<float>(x[k]);
+      mesh::vertex_normals(x, static_cast<int>(n), world.organs[o].geometry.mesh.surface.triangles,
+                           buf.normals.data());
+    }
+    times.simulate_s += seconds_since(t0);
+  };
+  stages.render = [&](int, int slot) {
+    auto t0 = Clock::now();
+    for (std::size_t o = 0; o < surface_ids.size(); ++o) {
+      const auto& buf = slots[static_cast<std::size_t>(slot)][o];
+      renderer.update_surface(surface_ids[o], buf.positions.data(), buf.normals.data());
     }
     renderer.draw(scene.camera, scene.lights, out.background);
     times.render_s += seconds_since(t0);
-
     t0 = Clock::now();
-    renderer.read_frame(frame);
+    renderer.read_frame(images[static_cast<std::size_t>(slot)]);
     times.readback_s += seconds_since(t0);
-
+  };
+  stages.consume = [&](int i, int slot) {
+    Image& image = images[static_cast<std::size_t>(slot)];
+    auto t0 = Clock::now();
+    if (out.antialias == scene::Antialias::kFxaa) fxaa.apply(image);
+    times.antialias_s += seconds_since(t0);
     t0 = Clock::now();
-    for (auto& sink : sinks) sink->write(frame, f);
+    for (auto& sink : sinks) sink->write(image, frames[static_cast<std::size_t>(i)]);
     times.encode_s += seconds_since(t0);
     ++times.frames;
     progress.update(times.frames);
-  }
+  };
+  run_frame_pipeline(static_cast<int>(frames.size()), kPipelineDepth, request.overlap, stages);
+
   const auto t0 = Clock::now();
   for (auto& sink : sinks) sink->finish();
   times.encode_s += seconds_since(t0);
@@ -141,9 +176,9 @@ std::string describe(const StageTimes& t) {
   char text[512];
   std::snprintf(text, sizeof text,
                 "%d frames in %.2f s: simulate %.2f ms/frame, render %.2f ms/frame, read back %.2f ms/frame, "
-                "encode %.2f ms/frame",
+                "anti-alias %.2f ms/frame, encode %.2f ms/frame (stages overlapped)",
                 t.frames, t.wall_s, 1e3 * t.simulate_s / n, 1e3 * t.render_s / n, 1e3 * t.readback_s / n,
-                1e3 * t.encode_s / n);
+                1e3 * t.antialias_s / n, 1e3 * t.encode_s / n);
   return text;
 }
 

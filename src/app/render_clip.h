@@ -1,5 +1,6 @@
 #pragma once
-// The frame loop: simulate -> render -> read back -> encode, for one scene.
+// The frame loop: simulate -> render -> read back -> anti-alias -> encode, for one scene,
+// with the stages overlapped on threads (app/frame_pipeline.h).
 
 #include <filesystem>
 #include <string>
@@ -18,14 +19,19 @@ struct RenderRequest {
   /// consecutive frames (it then holds that range, starting at time 0).
   std::vector<int> frames;
   bool show_progress = false;
+  /// Simulate, render and encode on three threads at once (app/frame_pipeline.h); false
+  /// runs them one after another. The output is the same bits either way.
+  bool overlap = true;
 };
 
-/// What each stage cost, summed over the clip.
+/// What each stage cost, summed over the clip. Stages overlap, so the sum exceeds wall_s;
+/// each is the busy time of its own thread (inflated when the stages contend for cores).
 struct StageTimes {
   int frames = 0;          ///< Frames rendered.
   double simulate_s = 0;   ///< unit: s
   double render_s = 0;     ///< unit: s
   double readback_s = 0;   ///< unit: s
+  double antialias_s = 0;  ///< The FXAA pass (render/fxaa.h), if the scene asks for it. unit: s
   double encode_s = 0;     ///< unit: s (video and PNG writing)
   double wall_s = 0;       ///< Whole run including set-up. unit: s
 };

@@ -58,12 +58,20 @@ OSMesaContext create_context() {
   fail("OSMesaCreateContextAttribs refused an OpenGL 4.5 and a 3.3 core-profile context");
 }
 
-GLuint compile_shader(GLenum type, std::string_view name) {
+/// Compiles shaders/<name> with `defines` ("#define X 1\n" lines) inserted after its
+/// #version line, which must come first.
+GLuint compile_shader(GLenum type, std::string_view name, std::string_view defines) {
   const std::string_view source = shader_source(name);
-  const GLchar* text = source.data();
-  const GLint length = static_cast<GLint>(source.size());
+  const std::size_t body = std::min(source.find('\n'), source.size() - 1) + 1;
+  const std::string_view parts[] = {source.substr(0, body), defines, source.substr(body)};
+  const GLchar* texts[3];
+  GLint lengths[3];
+  for (int i = 0; i < 3; ++i) {
+    texts[i] = parts[i].data();
+    lengths[i] = static_cast<GLint>(parts[i].size());
+  }
   const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &text, &length);
+  glShaderSource(shader, 3, texts, lengths);
   glCompileShader(shader);
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -78,11 +86,11 @@ GLuint compile_shader(GLenum type, std::string_view name) {
   return shader;
 }
 
-GLuint link_program(std::string_view vertex_name, std::string_view fragment_name) {
-  const GLuint vertex = compile_shader(GL_VERTEX_SHADER, vertex_name);
+GLuint link_program(std::string_view vertex_name, std::string_view fragment_name, std::string_view defines) {
+  const GLuint vertex = compile_shader(GL_VERTEX_SHADER, vertex_name, defines);
   GLuint fragment = 0;
   try {
-    fragment = compile_shader(GL_FRAGMENT_SHADER, fragment_name);
+    fragment = compile_shader(GL_FRAGMENT_SHADER, fragment_name, defines);
   } catch (...) {
     glDeleteShader(vertex);
     throw;
@@ -112,6 +120,32 @@ GLint uniform(GLuint program, const char* name) {
   if (location < 0) fail(std::string("uniform ") + name + " not found in the organ shader");
   return location;
 }
+
+/// The organ shader compiled for one light count. The count is a compile-time constant
+/// because llvmpipe runs a loop with a uniform bound (and the uniform-array indexing in it)
+/// far slower than an unrolled one: 2.4x the whole draw of a 720p heart (docs/performance.md).
+struct OrganProgram {
+  GLuint id = 0;
+  struct {
+    GLint view_projection, camera_position, light_to_light, light_radiance, up, specular, shininess;
+  } loc{};
+
+  void create(int light_count) {
+    id = link_program("organ.vert.glsl", "organ.frag.glsl",
+                      "#define LIGHT_COUNT " + std::to_string(light_count) + "\n");
+    loc.view_projection = uniform(id, "u_view_projection");
+    loc.camera_position = uniform(id, "u_camera_position");
+    loc.up = uniform(id, "u_up");
+    loc.specular = uniform(id, "u_specular");
+    loc.shininess = uniform(id, "u_shininess");
+    // Without lights these are compiled out (-1: glUniform then does nothing).
+    loc.light_to_light = glGetUniformLocation(id, "u_light_to_light");
+    loc.light_radiance = glGetUniformLocation(id, "u_light_radiance");
+    glUseProgram(id);
+    glUniform3fv(uniform(id, "u_sky"), 1, kSkyAmbient.data());
+    glUniform3fv(uniform(id, "u_ground"), 1, kGroundAmbient.data());
+  }
+};
 
 /// A framebuffer with a colour and a depth renderbuffer (depth only when `with_depth`).
 struct Framebuffer {
@@ -173,11 +207,8 @@ struct Renderer::Impl {
   mutable std::array<std::uint8_t, 4> tiny_buffer{};  ///< The 1x1 default framebuffer; we draw into FBOs.
   Framebuffer multisampled;                   ///< Drawn into when samples > 0.
   Framebuffer resolved;                       ///< Read back; drawn into directly when samples == 0.
-  GLuint program = 0;
-  struct {
-    GLint view_projection, camera_position, light_count, light_to_light, light_radiance, up, sky,
-        ground, specular, shininess;
-  } loc{};
+  /// Index: light count; linked on first use, so at most once per count.
+  std::array<OrganProgram, kMaxLights + 1> programs{};
   std::vector<Surface> surfaces;
 
   void make_current() const {
@@ -208,7 +239,9 @@ struct Renderer::Impl {
       glDeleteVertexArrays(1, &s.vao);
     }
     surfaces.clear();
-    if (program) glDeleteProgram(program);
+    for (OrganProgram& p : programs) {
+      if (p.id) glDeleteProgram(p.id);
+    }
     multisampled.destroy();
     resolved.destroy();
   }
@@ -240,17 +273,9 @@ Renderer::Renderer(int width, int height, int msaa_samples) : impl_(std::make_un
     r.resolved.create(width, height, 0, /*with_depth=*/msaa_samples == 0);
     if (msaa_samples > 0) r.multisampled.create(width, height, msaa_samples, /*with_depth=*/true);
 
-    r.program = link_program("organ.vert.glsl", "organ.frag.glsl");
-    r.loc.view_projection = uniform(r.program, "u_view_projection");
-    r.loc.camera_position = uniform(r.program, "u_camera_position");
-    r.loc.light_count = uniform(r.program, "u_light_count");
-    r.loc.light_to_light = uniform(r.program, "u_light_to_light");
-    r.loc.light_radiance = uniform(r.program, "u_light_radiance");
-    r.loc.up = uniform(r.program, "u_up");
-    r.loc.sky = uniform(r.program, "u_sky");
-    r.loc.ground = uniform(r.program, "u_ground");
-    r.loc.specular = uniform(r.program, "u_specular");
-    r.loc.shininess = uniform(r.program, "u_shininess");
+    // Linked now so a broken shader fails at set-up; other light counts link on first use.
+    constexpr int kDefaultLights = 2;  // scene's default_lights(): a key and a fill.
+    r.programs[kDefaultLights].create(kDefaultLights);
 
     // Fixed state: it never changes between frames, and this context is ours alone.
     glBindFramebuffer(GL_FRAMEBUFFER, r.draw_fbo());
@@ -262,9 +287,6 @@ Renderer::Renderer(int width, int height, int msaa_samples) : impl_(std::make_un
     glFrontFace(GL_CCW);
     glDisable(GL_DITHER);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glUseProgram(r.program);
-    glUniform3fv(r.loc.sky, 1, kSkyAmbient.data());
-    glUniform3fv(r.loc.ground, 1, kGroundAmbient.data());
     check_gl("renderer set-up");
   } catch (...) {
     r.release();
@@ -424,17 +446,18 @@ void Renderer::draw(const scene::Camera& camera, const std::vector<scene::Light>
                static_cast<float>(background.z()), 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-  glUseProgram(r.program);
-  glUniformMatrix4fv(r.loc.view_projection, 1, GL_FALSE, view_projection.data());
-  glUniform3fv(r.loc.camera_position, 1, eye.data());
-  glUniform3fv(r.loc.up, 1, up.data());
-  glUniform1i(r.loc.light_count, light_count);
-  glUniform3fv(r.loc.light_to_light, kMaxLights, to_light.data());
-  glUniform3fv(r.loc.light_radiance, kMaxLights, radiance.data());
+  OrganProgram& program = r.programs[static_cast<std::size_t>(light_count)];
+  if (!program.id) program.create(light_count);
+  glUseProgram(program.id);
+  glUniformMatrix4fv(program.loc.view_projection, 1, GL_FALSE, view_projection.data());
+  glUniform3fv(program.loc.camera_position, 1, eye.data());
+  glUniform3fv(program.loc.up, 1, up.data());
+  glUniform3fv(program.loc.light_to_light, std::max(light_count, 1), to_light.data());
+  glUniform3fv(program.loc.light_radiance, std::max(light_count, 1), radiance.data());
   for (const Surface& s : r.surfaces) {
     if (!s.uploaded) continue;
-    glUniform1f(r.loc.specular, s.specular);
-    glUniform1f(r.loc.shininess, s.shininess);
+    glUniform1f(program.loc.specular, s.specular);
+    glUniform1f(program.loc.shininess, s.shininess);
     glBindVertexArray(s.vao);
     glDrawElements(GL_TRIANGLES, s.index_count, GL_UNSIGNED_INT, nullptr);
   }

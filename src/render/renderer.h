@@ -17,7 +17,7 @@
 
 namespace systole::render {
 
-/// Most directional lights draw() shades with (shaders/organ.frag.glsl has the same bound).
+/// Most directional lights draw() shades with (one organ program is compiled per count).
 inline constexpr int kMaxLights = 8;
 
 struct GlInfo {

@@ -175,15 +175,28 @@ struct Light {
   double intensity = 1;  ///< unit: 1
 };
 
+/// How edges are smoothed. FXAA is a post pass on the CPU (render/fxaa.h); MSAA shades
+/// 2 or 4 samples per pixel, which costs llvmpipe far more (docs/performance.md).
+enum class Antialias { kOff, kFxaa, kMsaa2, kMsaa4 };
+
+/// Encoder settings by purpose; each names an x264 preset and CRF (Output::crf, ::preset),
+/// chosen by measurement (docs/performance.md).
+enum class Quality {
+  kDraft,     ///< Fastest encode, larger files: for iterating on a scene.
+  kStandard,  ///< For sharing and teaching.
+  kArchival,  ///< Smallest artefacts, slower encode: for keeping.
+};
+
 struct Output {
   std::string file;        ///< Video path; empty: out/<scene name>.mp4 beside the working dir.
   int width = 1280;        ///< unit: px, even
   int height = 720;        ///< unit: px, even
   double fps = 30;         ///< unit: 1/s
   double duration_s = 10;  ///< unit: s
-  int crf = 20;            ///< x264 constant rate factor, 0 (lossless) to 51.
-  std::string preset = "veryfast";  ///< x264 preset.
-  int antialias = 4;       ///< MSAA samples: 0 (off), 2 or 4.
+  Quality quality = Quality::kStandard;
+  int crf = 20;            ///< x264 constant rate factor, 0 (lossless) to 51; default: the quality's.
+  std::string preset = "veryfast";  ///< x264 preset; default: the quality's.
+  Antialias antialias = Antialias::kFxaa;
   Color background = Color(0.06, 0.07, 0.09);
 
   int frame_count() const;  ///< round(duration * fps).

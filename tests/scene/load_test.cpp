@@ -144,7 +144,7 @@ TEST(SceneLoad, FullSceneArrivesInSiUnits) {
   EXPECT_EQ(s.output.frame_count(), 150);
   EXPECT_EQ(s.output.crf, 18);
   EXPECT_EQ(s.output.preset, "medium");
-  EXPECT_EQ(s.output.antialias, 2);
+  EXPECT_EQ(s.output.antialias, Antialias::kMsaa2);
   EXPECT_EQ(s.output.background, Color(0, 0, 0));
 }
 

@@ -1,0 +1,94 @@
+#include "render/fxaa.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+namespace systole::render {
+namespace {
+
+constexpr float kEdgeThreshold = 1.0f / 8.0f;     // Least contrast, relative to the local max luma.
+constexpr float kEdgeThresholdMin = 1.0f / 24.0f; // Least contrast in dark areas, unit: luma.
+constexpr float kReduceMul = 1.0f / 8.0f;
+constexpr float kReduceMin = 1.0f / 128.0f;
+constexpr float kSpanMax = 8.0f;                  // Longest blur along an edge, unit: px
+
+struct Rgb {
+  float r = 0, g = 0, b = 0;
+};
+
+Rgb operator+(Rgb a, Rgb b) { return {a.r + b.r, a.g + b.g, a.b + b.b}; }
+Rgb operator*(float s, Rgb a) { return {s * a.r, s * a.g, s * a.b}; }
+
+float luma(float r, float g, float b) { return 0.299f * r + 0.587f * g + 0.114f * b; }
+
+/// Bilinear sample at (x, y) in pixel units (pixel centres at integers), clamped at the border.
+Rgb sample(const Image& image, float x, float y) {
+  x = std::clamp(x, 0.0f, static_cast<float>(image.width - 1));
+  y = std::clamp(y, 0.0f, static_cast<float>(image.height - 1));
+  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  const int x1 = std::min(x0 + 1, image.width - 1), y1 = std::min(y0 + 1, image.height - 1);
+  const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
+  const std::uint8_t* p00 = image.pixel(x0, y0);
+  const std::uint8_t* p10 = image.pixel(x1, y0);
+  const std::uint8_t* p01 = image.pixel(x0, y1);
+  const std::uint8_t* p11 = image.pixel(x1, y1);
+  float c[3];
+  for (int k = 0; k < 3; ++k) {
+    const float top = static_cast<float>(p00[k]) + fx * static_cast<float>(p10[k] - p00[k]);
+    const float bottom = static_cast<float>(p01[k]) + fx * static_cast<float>(p11[k] - p01[k]);
+    c[k] = (top + fy * (bottom - top)) * (1.0f / 255.0f);
+  }
+  return {c[0], c[1], c[2]};
+}
+
+std::uint8_t to_byte(float c) { return static_cast<std::uint8_t>(std::clamp(c, 0.0f, 1.0f) * 255.0f + 0.5f); }
+
+}  // namespace
+
+void Fxaa::apply(Image& image) {
+  const int w = image.width, h = image.height;
+  if (w < 3 || h < 3) return;
+  source_.width = w;
+  source_.height = h;
+  source_.rgb.assign(image.rgb.begin(), image.rgb.end());  // No allocation once sized.
+  luma_.resize(static_cast<std::size_t>(w) * h);
+  for (std::size_t i = 0; i < luma_.size(); ++i) {
+    const std::uint8_t* p = &source_.rgb[3 * i];
+    luma_[i] = luma(p[0], p[1], p[2]) * (1.0f / 255.0f);
+  }
+  // Border pixels are left as they are: the corners read outside the frame.
+  for (int y = 1; y < h - 1; ++y) {
+    const float* above = &luma_[static_cast<std::size_t>(y - 1) * w];
+    const float* row = above + w;
+    const float* below = row + w;
+    for (int x = 1; x < w - 1; ++x) {
+      const float l_nw = above[x - 1], l_ne = above[x + 1], l_sw = below[x - 1], l_se = below[x + 1];
+      const float l_m = row[x];
+      const float l_min = std::min({l_m, l_nw, l_ne, l_sw, l_se});
+      const float l_max = std::max({l_m, l_nw, l_ne, l_sw, l_se});
+      if (l_max - l_min < std::max(kEdgeThresholdMin, l_max * kEdgeThreshold)) continue;
+
+      // Along the edge: across the luma gradient (image rows grow downwards).
+      float dx = -((l_nw + l_ne) - (l_sw + l_se));
+      float dy = -((l_nw + l_sw) - (l_ne + l_se));
+      const float reduce = std::max((l_nw + l_ne + l_sw + l_se) * (0.25f * kReduceMul), kReduceMin);
+      const float scale = 1.0f / (std::min(std::abs(dx), std::abs(dy)) + reduce);
+      dx = std::clamp(dx * scale, -kSpanMax, kSpanMax);
+      dy = std::clamp(dy * scale, -kSpanMax, kSpanMax);
+      const float fx = static_cast<float>(x), fy = static_cast<float>(y);
+      const auto at = [&](float t) { return sample(source_, fx + t * dx, fy + t * dy); };
+      const Rgb a = 0.5f * (at(1.0f / 3.0f - 0.5f) + at(2.0f / 3.0f - 0.5f));
+      const Rgb b = 0.5f * a + 0.25f * (at(-0.5f) + at(0.5f));
+      const float l_b = luma(b.r, b.g, b.b);
+      const Rgb& out = (l_b < l_min || l_b > l_max) ? a : b;
+      std::uint8_t* p = image.row(y) + 3 * static_cast<std::size_t>(x);
+      p[0] = to_byte(out.r);
+      p[1] = to_byte(out.g);
+      p[2] = to_byte(out.b);
+    }
+  }
+}
+
+}  // namespace systole::render

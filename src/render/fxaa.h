@@ -1,0 +1,29 @@
+#pragma once
+// Fast approximate anti-aliasing on the CPU, after T. Lottes, "FXAA" (NVIDIA white paper,
+// 2009), the compact "PC console" variant: where the local luma contrast is high, blur
+// along the edge (across the luma gradient) with two or four bilinear taps, keeping the
+// four-tap result only if it stays within the local luma range.
+//
+// Why on the CPU: on llvmpipe 4x MSAA costs 2.2x the draw plus a resolve (about 47 ms of
+// CPU per 720p heart frame against 17 ms without), and the same filter as a GLSL pass cost
+// more than MSAA (llvmpipe's texture sampler); here flat pixels - most of a frame - stop
+// after five luma reads. Figures: docs/performance.md.
+
+#include <vector>
+
+#include "common/image.h"
+
+namespace systole::render {
+
+class Fxaa {
+ public:
+  /// Smooths the edges of `image` (sRGB, top row first) in place. The result depends only
+  /// on the pixels (same bits on every run and thread); no allocation once sized.
+  void apply(Image& image);
+
+ private:
+  std::vector<float> luma_;  ///< Per pixel of the input, unit: 1 (0..1).
+  Image source_;             ///< The input, read while `image` is written.
+};
+
+}  // namespace systole::render
