@@ -4,9 +4,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <numeric>
 #include <vector>
 
+#include "app/bake.h"
 #include "app/frame_list.h"
 #include "app/frame_pipeline.h"
 #include "app/progress.h"
@@ -36,6 +38,7 @@ std::vector<scene::Color> vertex_colors(const scene::Organ& organ, const std::ve
 
 /// One organ's surface for one frame, as the renderer takes it (allocated once per slot).
 struct SurfaceBuffers {
+  Eigen::Matrix3Xd baked;  ///< This frame's positions, when read from a bake. unit: m
   std::vector<float> positions, normals;  ///< xyz per vertex. unit: m, 1
 };
 
@@ -119,17 +122,22 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
 
   std::vector<Image> images(kPipelineDepth, Image(out.width, out.height));
   render::Fxaa fxaa;
-  Progress progress(scene.name, static_cast<int>(frames.size()), request.show_progress);
+  std::optional<BakeReader> bake;
+  if (!request.from_bake.empty()) bake.emplace(request.from_bake).check_matches(scene, world);
+  Progress progress(request.job.empty() ? scene.name : request.job, static_cast<int>(frames.size()),
+                    request.progress);
 
   // Each stage adds to its own times only (one thread each).
   PipelineStages stages;
   stages.produce = [&](int i, int slot) {
     const int f = frames[static_cast<std::size_t>(i)];
     auto t0 = Clock::now();
-    advance_to_frame(world, f);  // Steps through every frame in between.
+    if (!bake) advance_to_frame(world, f);  // Steps through every frame in between.
     for (std::size_t o = 0; o < world.organs.size(); ++o) {
       auto& buf = slots[static_cast<std::size_t>(slot)][o];
-      const Eigen::Matrix3Xd& positions = world.organs[o].state.x;  // The positions source. unit: m
+      // The positions source: the simulation, or a bake of it. unit: m
+      if (bake) bake->read(f, static_cast<int>(o), buf.baked);
+      const Eigen::Matrix3Xd& positions = bake ? buf.baked : world.organs[o].state.x;
       const Eigen::Index n = positions.cols();
       const double* x = positions.data();
       for (Eigen::Index k = 0; k < 3 * n; ++k) buf.positions[k] = static_cast<float>(x[k]);

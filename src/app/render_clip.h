@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/progress.h"
 #include "scene/scene.h"
 
 namespace systole::app {
@@ -18,7 +19,10 @@ struct RenderRequest {
   /// listed one, so frame k is the same image whatever else is rendered. A video needs
   /// consecutive frames (it then holds that range, starting at time 0).
   std::vector<int> frames;
-  bool show_progress = false;
+  ProgressStyle progress = ProgressStyle::kNone;
+  std::string job;  ///< Names the clip in progress reports; empty: the scene's name.
+  /// A bake of this scene (app/bake.h): positions are read from it instead of simulated.
+  std::filesystem::path from_bake;
   /// Simulate, render and encode on three threads at once (app/frame_pipeline.h); false
   /// runs them one after another. The output is the same bits either way.
   bool overlap = true;

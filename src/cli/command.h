@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "app/progress.h"
+
 namespace systole::cli {
 
 struct Command {
@@ -18,8 +20,14 @@ Command add_render_command(CLI::App& app);
 Command add_validate_command(CLI::App& app);
 Command add_info_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
+Command add_bake_command(CLI::App& app);
 
 /// Adds the repeatable `-D key.path=value` option every scene-reading command takes.
 void add_define_option(CLI::App& command, std::vector<std::string>& defines);
+
+/// Adds `--progress auto|none|json` (render_command.cpp).
+void add_progress_option(CLI::App& command, std::string& progress);
+/// The style --progress asks for; "auto" draws a line only when stderr is a terminal.
+app::ProgressStyle progress_style(const std::string& progress);
 
 }  // namespace systole::cli

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
       systole::cli::add_render_command(app),
       systole::cli::add_validate_command(app),
       systole::cli::add_compare_command(app),
+      systole::cli::add_bake_command(app),
       systole::cli::add_info_command(app),
   };
 

@@ -2,62 +2,118 @@
 #include <iostream>
 #include <memory>
 
+#include "app/batch.h"
 #include "app/frame_list.h"
+#include "app/manifest.h"
 #include "app/progress.h"
-#include "app/render_clip.h"
 #include "cli/command.h"
 #include "common/error.h"
 #include "scene/load.h"
 
 namespace systole::cli {
 
+void add_progress_option(CLI::App& command, std::string& progress) {
+  command.add_option("--progress", progress,
+                     "auto (a line on a terminal), none, or json: one object per line on stdout "
+                     "({\"job\", \"frame\", \"frames\", \"fps\", \"eta_s\"}, then each job's status)")
+      ->check(CLI::IsMember({"auto", "none", "json"}))
+      ->default_val("auto");
+}
+
+app::ProgressStyle progress_style(const std::string& progress) {
+  if (progress == "json") return app::ProgressStyle::kJson;
+  if (progress == "none" || !app::Progress::stderr_is_terminal()) return app::ProgressStyle::kNone;
+  return app::ProgressStyle::kTerminal;
+}
+
+namespace {
+
+/// --dry-run: each job of this shard, its overrides and its video, and whether it is done.
+void print_plan(const std::vector<app::Job>& jobs, const app::BatchOptions& options) {
+  for (const auto& job : jobs) {
+    std::cout << job.name << "\t" << job.scene.string();
+    for (const auto& o : job.overrides) std::cout << " -D '" << o << "'";
+    try {
+      const auto scene = scene::load(job.scene, job.overrides);
+      const auto request = app::plan_request(job, scene, options);
+      std::cout << "\t-> " << (request.video.empty() ? request.png_dir : request.video).string();
+      if (!request.video.empty() && options.from_bake.empty() && !options.force &&
+          app::up_to_date(request.video, {job.scene.string(), app::scene_content_hash(scene), job.overrides,
+                                          options.frames, 0})) {
+        std::cout << " (up to date: skipped)";
+      }
+    } catch (const Error& e) {
+      std::cout << "\t-> fails: " << e.what();
+    }
+    std::cout << "\n";
+  }
+}
+
+}  // namespace
+
 Command add_render_command(CLI::App& app) {
   struct Options {
-    std::string scene, output, png_dir, frames;
+    std::vector<std::string> scenes;
+    std::string output, png_dir, frames, from_bake, shard, progress;
     std::vector<std::string> defines;
-    bool no_video = false;
+    bool no_video = false, force = false, dry_run = false;
+    int jobs = 1;
   };
   auto o = std::make_shared<Options>();
-  auto* cmd = app.add_subcommand("render", "Simulate and render a scene to a video (and PNG frames).");
-  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
-  cmd->add_option("-o,--output", o->output, "Video to write (default: output.file, else out/<scene>.mp4)");
-  cmd->add_option("--png", o->png_dir, "Also write the frames as numbered PNGs (frame_00042.png) into this folder");
+  auto* cmd = app.add_subcommand("render", "Simulate and render scenes to videos (and PNG frames).");
+  cmd->add_option("scene", o->scenes, "Scene files (YAML), folders of them, or glob patterns")->required();
+  cmd->add_option("-o,--output", o->output,
+                  "Video to write (default: output.file, else out/<scene>.mp4); with several jobs, a folder "
+                  "for <job>.mp4");
+  cmd->add_option("--png", o->png_dir,
+                  "Also write the frames as numbered PNGs (frame_00042.png) into this folder (a subfolder per "
+                  "job in a batch)");
   cmd->add_flag("--no-video", o->no_video, "Write no video (with --png: frames only)");
   cmd->add_option("--frames", o->frames,
                   std::string("Render only these frames, as PNGs (needs --png; with -o also a video, if they are "
                               "consecutive). Forms: ") + app::kFrameListForms);
+  cmd->add_option("--from-bake", o->from_bake, "Read the positions from this bake (systole bake) instead of simulating");
+  cmd->add_option("-j,--jobs", o->jobs, "Clips rendered at once, each in its own process")
+      ->check(CLI::Range(1, 64))
+      ->default_val(1);
+  cmd->add_option("--shard", o->shard,
+                  "Render only jobs k with k % N == i (0-based i/N); default: from SLURM_ARRAY_TASK_ID/COUNT, "
+                  "JOB_COMPLETION_INDEX with SYSTOLE_SHARD_COUNT, or AWS_BATCH_JOB_ARRAY_INDEX/SIZE");
+  cmd->add_flag("--force", o->force, "Render even when the video's manifest says it is up to date");
+  cmd->add_flag("--dry-run", o->dry_run, "List the jobs and their outputs; render nothing");
+  add_progress_option(*cmd, o->progress);
   add_define_option(*cmd, o->defines);
 
   return {cmd, [o] {
-            const auto scene = scene::load(o->scene, o->defines);
-            app::RenderRequest request;
-            if (!o->frames.empty()) {
-              // A selection is for stills: a video is written only when asked for by name
-              // (so a partial clip never replaces the default video), and it must be a range.
-              request.frames = app::parse_frame_list(o->frames, scene.output.frame_count());
-              if (o->png_dir.empty() && (o->output.empty() || o->no_video)) {
-                throw Error(ExitCode::kUsage,
-                            "--frames renders PNG frames: add --png DIR (and -o OUT.mp4 for a video of a "
-                            "consecutive range)");
-              }
-              if (!o->no_video && !o->output.empty()) request.video = o->output;
-            } else if (!o->no_video) {
-              request.video = o->output.empty() ? app::default_video_path(scene) : std::filesystem::path(o->output);
-              // The scene's output folder (out/ by default) is ours to create; a folder named
-              // with -o must exist, so a typo in it is reported rather than silently created.
-              if (o->output.empty() && request.video.has_parent_path()) {
-                std::filesystem::create_directories(request.video.parent_path());
-              }
+            const auto all = app::expand_jobs(o->scenes, o->defines);
+            const app::Shard shard = o->shard.empty() ? app::shard_from_environment() : app::parse_shard(o->shard);
+            const auto jobs = app::select_shard(all, shard);
+            app::BatchOptions options;
+            options.output = o->output;
+            options.png_dir = o->png_dir;
+            options.no_video = o->no_video;
+            options.frames = o->frames;
+            options.from_bake = o->from_bake;
+            options.progress = progress_style(o->progress);
+            options.force = o->force;
+            options.parallel = o->jobs;
+            options.several = all.size() > 1;
+            if (!shard.source.empty()) {
+              std::cerr << "shard " << shard.index << "/" << shard.count << " (" << shard.source << "): " << jobs.size()
+                        << " of " << all.size() << " jobs\n";
             }
-            request.png_dir = o->png_dir;
-            request.show_progress = app::Progress::stderr_is_terminal();
-            const auto times = app::render_clip(scene, request);
-            if (!request.video.empty()) std::cerr << "wrote " << request.video.string() << "\n";
-            if (!request.png_dir.empty()) {
-              std::cerr << "wrote " << times.frames << " PNG frames to " << o->png_dir << "\n";
+            if (o->dry_run) {
+              print_plan(jobs, options);
+              return 0;
             }
-            std::cerr << app::describe(times) << "\n";
-            return 0;
+            const bool json = options.progress == app::ProgressStyle::kJson;
+            const auto results = app::run_jobs(jobs, options, [&](const app::JobResult& r) {
+              if (json) std::cout << app::result_json(r) << std::endl;
+            });
+            if (options.several) std::cerr << app::summary_table(results);
+            const int code = app::batch_exit_code(results);
+            if (code != 0 && !options.several) throw Error(static_cast<ExitCode>(code), results[0].error);
+            return code;
           }};
 }
 
