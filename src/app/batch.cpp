@@ -294,6 +294,7 @@ RenderRequest plan_request(const Job& job, const scene::Scene& scene, const Batc
   }
   if (!options.png_dir.empty()) request.png_dir = options.several ? options.png_dir / job.name : options.png_dir;
   request.from_bake = options.from_bake;
+  request.limits = options.limits;
   request.progress = options.progress;
   request.job = job.name;
   return request;

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/limits.h"
 #include "app/progress.h"
 #include "app/render_clip.h"
 #include "scene/scene.h"
@@ -73,6 +74,7 @@ struct BatchOptions {
   bool no_video = false;
   std::string frames;             ///< --frames list; empty: the whole clip.
   std::filesystem::path from_bake;
+  Limits limits;
   ProgressStyle progress = ProgressStyle::kNone;
   bool force = false;             ///< Render even when the manifest says the video is up to date.
   int parallel = 1;               ///< Jobs at once (--jobs), each in its own process.

@@ -90,7 +90,10 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
   const auto& out = scene.output;
   const int frame_count = out.frame_count();
   const std::vector<int> frames = selected_frames(request, frame_count);
+  check_scene_limits(scene, {static_cast<int>(frames.size()), !request.video.empty(), !request.png_dir.empty()},
+                     request.limits);
   World world = build_world(scene);
+  check_world_limits(scene, world, request.limits);
   // Read when the process creates its first context; a value set by the caller wins.
   setenv("LP_NUM_THREADS", kRasterizerThreads, /*overwrite=*/0);
   const int msaa = out.antialias == scene::Antialias::kMsaa4 ? 4 : out.antialias == scene::Antialias::kMsaa2 ? 2 : 0;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/limits.h"
 #include "app/progress.h"
 #include "scene/scene.h"
 
@@ -23,6 +24,9 @@ struct RenderRequest {
   std::string job;  ///< Names the clip in progress reports; empty: the scene's name.
   /// A bake of this scene (app/bake.h): positions are read from it instead of simulated.
   std::filesystem::path from_bake;
+  /// Checked before the world is built (frame size, duration, output size) and before the
+  /// first step (vertices, solver substeps); Error(kDataError) names the one exceeded.
+  Limits limits;
   /// Simulate, render and encode on three threads at once (app/frame_pipeline.h); false
   /// runs them one after another. The output is the same bits either way.
   bool overlap = true;

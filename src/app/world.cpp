@@ -15,6 +15,14 @@ namespace {
 /// The frame period split into whole steps no longer than `max_step_s`.
 int steps_per_frame(double frame_s, double max_step_s, bool round_down) {
   const double n = frame_s / max_step_s;
+  // A step of 1e-300 s is in range for the schema but no int counts it: refuse it here,
+  // before the resource limits (app/limits.h) can say what it would cost.
+  if (!(n < 1e9)) {
+    std::ostringstream m;
+    m << "a step of " << max_step_s << " s makes " << n << " steps per frame of " << frame_s
+      << " s; raise solver.dt or output.fps";
+    throw Error(ExitCode::kDataError, m.str());
+  }
   return std::max(1, static_cast<int>(round_down ? std::ceil(n - 1e-9) : std::lround(n)));
 }
 
@@ -39,6 +47,12 @@ void choose_steps(World& w, double frame_s) {
 }  // namespace
 
 World build_world(const scene::Scene& scene) {
+  if (scene.output.frame_count() < 1) {
+    std::ostringstream m;
+    m << scene.path << ": output.duration (" << scene.output.duration_s << " s) x output.fps (" << scene.output.fps
+      << ") gives no frame; the clip needs at least one";
+    throw Error(ExitCode::kDataError, m.str());
+  }
   World w;
   w.fps = scene.output.fps;
   const double frame_s = 1.0 / scene.output.fps;

@@ -30,4 +30,7 @@ void add_progress_option(CLI::App& command, std::string& progress);
 /// The style --progress asks for; "auto" draws a line only when stderr is a terminal.
 app::ProgressStyle progress_style(const std::string& progress);
 
+/// Adds `--allow-large`, which lifts the resource limits (app/limits.h).
+void add_allow_large_flag(CLI::App& command, bool& allow_large);
+
 }  // namespace systole::cli

@@ -4,6 +4,7 @@
 
 #include "app/batch.h"
 #include "app/frame_list.h"
+#include "app/limits.h"
 #include "app/manifest.h"
 #include "app/progress.h"
 #include "cli/command.h"
@@ -56,7 +57,7 @@ Command add_render_command(CLI::App& app) {
     std::vector<std::string> scenes;
     std::string output, png_dir, frames, from_bake, shard, progress;
     std::vector<std::string> defines;
-    bool no_video = false, force = false, dry_run = false;
+    bool no_video = false, allow_large = false, force = false, dry_run = false;
     int jobs = 1;
   };
   auto o = std::make_shared<Options>();
@@ -83,6 +84,7 @@ Command add_render_command(CLI::App& app) {
   cmd->add_flag("--dry-run", o->dry_run, "List the jobs and their outputs; render nothing");
   add_progress_option(*cmd, o->progress);
   add_define_option(*cmd, o->defines);
+  add_allow_large_flag(*cmd, o->allow_large);
 
   return {cmd, [o] {
             const auto all = app::expand_jobs(o->scenes, o->defines);
@@ -94,6 +96,7 @@ Command add_render_command(CLI::App& app) {
             options.no_video = o->no_video;
             options.frames = o->frames;
             options.from_bake = o->from_bake;
+            options.limits = o->allow_large ? app::Limits::none() : app::Limits{};
             options.progress = progress_style(o->progress);
             options.force = o->force;
             options.parallel = o->jobs;

@@ -1,6 +1,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/limits.h"
 #include "app/summary.h"
 #include "app/world.h"
 #include "cli/command.h"
@@ -12,18 +13,30 @@ void add_define_option(CLI::App& command, std::vector<std::string>& defines) {
   command.add_option("-D,--define", defines, "Override a scene value: key.path=value (repeatable)");
 }
 
+void add_allow_large_flag(CLI::App& command, bool& allow_large) {
+  command.add_flag("--allow-large", allow_large,
+                   "Lift the resource limits (frame size, duration, vertices, solver steps, output size: "
+                   "docs/robustness.md)");
+}
+
 Command add_validate_command(CLI::App& app) {
   struct Options {
     std::string scene;
     std::vector<std::string> defines;
+    bool allow_large = false;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("validate", "Parse a scene and build its model; render nothing.");
   cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
   add_define_option(*cmd, o->defines);
+  add_allow_large_flag(*cmd, o->allow_large);
   return {cmd, [o] {
             const auto scene = scene::load(o->scene, o->defines);
+            // The limits `render` would apply to the default video, so a scene that passes here renders.
+            const auto limits = o->allow_large ? app::Limits::none() : app::Limits{};
+            app::check_scene_limits(scene, {scene.output.frame_count(), true, false}, limits);
             const auto world = app::build_world(scene);
+            app::check_world_limits(scene, world, limits);
             std::cout << app::summarize(scene, world) << "ok\n";
             return 0;
           }};

@@ -518,7 +518,9 @@ ValueSpec<MeshSource> mesh_spec() {
       const std::filesystem::path file = std::filesystem::path(m.file).is_absolute() ? std::filesystem::path(m.file) : ctx.base_dir / m.file;
       std::error_code ec;
       if (!std::filesystem::is_regular_file(file, ec))
-        throw Error(ExitCode::kNoInput, where(origin_of(node, "file")) + join(path, "file") + ": mesh file not found: " + file.lexically_normal().string());
+        throw Error(ExitCode::kNoInput, where(origin_of(node, "file")) + join(path, "file") + ": " +
+                                            (std::filesystem::exists(file, ec) ? "not a regular file" : "mesh file not found") +
+                                            ": " + file.lexically_normal().string());
       m.file = file.lexically_normal().string();
     }
   });

@@ -215,7 +215,9 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
                                                  drive_cycles(d, options.clip_s, options.clip_s));
     }
   } else if (organ.body.volume_drive.waveform != scene::Waveform::kNone) {
-    throw Error(ExitCode::kDataError, "organ '" + organ.name + "': body.volume_drive drives the rest volume, so it needs " +
+    const scene::Origin& at = organ.origin;  // file:line of the organ, as scene errors give it
+    const std::string place = at.file.empty() ? "" : at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": ";
+    throw Error(ExitCode::kDataError, place + "organ '" + organ.name + "': body.volume_drive drives the rest volume, so it needs " +
                                           (organ.body.volume_stiffness_Pa > 0
                                                ? std::string("a closed surface (this one is open or non-manifold: see the mesh report)")
                                                : std::string("body.volume_stiffness > 0")));

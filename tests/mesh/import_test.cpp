@@ -130,6 +130,51 @@ TEST(Import, FileWithoutTrianglesIsDataError) {
   }
 }
 
+// Found by fuzz_mesh (fuzz/regressions/mesh/ply-header-without-end-header-hang): assimp's
+// PLY reader never returns on such a header, so it must be refused before assimp reads it.
+TEST(Import, PlyHeaderWithoutEndHeaderIsDataErrorNotAHang) {
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
+  for (const char* name : {"no_end_header.ply", "no_end_header_named_as_obj.obj"}) {
+    const auto file = testing::scratch(name);
+    testing::write_text(file, header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    try {
+      import_mesh(file);
+      ADD_FAILURE() << name << ": expected an error";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::kDataError) << e.what();
+      EXPECT_NE(std::string(e.what()).find("PLY header without end_header"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(Import, PlyHeaderClaimingMoreThanTheFileHoldsIsDataError) {
+  // 10 million vertices promised in a 200-byte file: assimp would allocate and weld them all.
+  const auto file = testing::scratch("ten_million.ply");
+  testing::write_text(file, "ply\nformat ascii 1.0\nelement vertex 10000000\nproperty float x\nproperty float y\n"
+                            "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                            "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  try {
+    import_mesh(file);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kDataError);
+    EXPECT_NE(std::string(e.what()).find("the PLY header promises at least 60000002 bytes of elements; the file has"),
+              std::string::npos) << e.what();
+  }
+}
+
+TEST(Import, DeviceOrPipeIsNotAMeshFile) {
+  // /dev/zero never ends: only regular files are read.
+  try {
+    import_mesh("/dev/zero");
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kNoInput);
+    EXPECT_NE(std::string(e.what()).find("/dev/zero: not a regular file"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Import, SharedOrganMeshesAreClosed) {
   const std::filesystem::path dir = SYSTOLE_SOURCE_DIR "/../shared/meshes";
   if (!std::filesystem::is_directory(dir)) GTEST_SKIP() << "no shared meshes at " << dir;

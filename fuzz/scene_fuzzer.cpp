@@ -1,0 +1,34 @@
+// Fuzz target: YAML text -> scene::load_from_string -> the resource limits -> app::build_world
+// -> two frames of simulation. Bad input must end in a systole::Error (a clear message and
+// an exit code); anything else - a crash, a sanitizer report, another exception, a hang -
+// is a bug. Run with scripts/fuzz; fuzz/corpus/scene holds the seeds.
+
+#include <cstddef>
+#include <algorithm>
+#include <cstdint>
+#include <string_view>
+
+#include "app/limits.h"
+#include "app/world.h"
+#include "common/error.h"
+#include "scene/load.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace systole;
+  const std::string_view yaml(reinterpret_cast<const char*>(data), size);
+  try {
+    const scene::Scene scene = scene::load_from_string(yaml, "fuzz.yaml");
+    // As `systole render` does: absurd work is refused before it starts.
+    app::Limits limits;
+    // Tighter than the defaults, so one input takes a fraction of a second.
+    limits.max_vertices = 200'000;
+    limits.max_substeps = 50'000;
+    app::check_scene_limits(scene, {scene.output.frame_count(), true, false}, limits);
+    app::World world = app::build_world(scene);
+    app::check_world_limits(scene, world, limits);
+    app::advance_to_frame(world, std::min(2, scene.output.frame_count()));
+  } catch (const Error&) {
+    // A clear error is the right answer to bad input.
+  }
+  return 0;
+}
