@@ -66,11 +66,13 @@ double bake_clip(const scene::Scene& scene, const fs::path& file, ProgressStyle 
     out.put(static_cast<std::uint32_t>(name.size()));
     out.bytes(name.data(), name.size());
   }
+  Eigen::Matrix3Xd positions;
   Progress progress(label, frames, style);
   for (int f = 0; f < frames; ++f) {
     advance_to_frame(world, f);
     for (const auto& body : world.organs) {
-      out.bytes(body.state.x.data(), sizeof(double) * body.state.x.size());
+      render_positions(body, positions);
+      out.bytes(positions.data(), sizeof(double) * positions.size());
     }
     progress.update(f + 1);
   }

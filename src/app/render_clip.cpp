@@ -38,7 +38,7 @@ std::vector<scene::Color> vertex_colors(const scene::Organ& organ, const std::ve
 
 /// One organ's surface for one frame, as the renderer takes it (allocated once per slot).
 struct SurfaceBuffers {
-  Eigen::Matrix3Xd baked;  ///< This frame's positions, when read from a bake. unit: m
+  Eigen::Matrix3Xd mesh_positions;  ///< The render mesh's vertices this frame (render_positions). unit: m
   std::vector<float> positions, normals;  ///< xyz per vertex. unit: m, 1
 };
 
@@ -138,11 +138,14 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
     if (!bake) advance_to_frame(world, f);  // Steps through every frame in between.
     for (std::size_t o = 0; o < world.organs.size(); ++o) {
       auto& buf = slots[static_cast<std::size_t>(slot)][o];
-      // The positions source: the simulation, or a bake of it. unit: m
-      if (bake) bake->read(f, static_cast<int>(o), buf.baked);
-      const Eigen::Matrix3Xd& positions = bake ? buf.baked : world.organs[o].state.x;
-      const Eigen::Index n = positions.cols();
-      const double* x = positions.data();
+      // The positions source: the simulation, or a bake of it.
+      if (bake) {
+        bake->read(f, static_cast<int>(o), buf.mesh_positions);
+      } else {
+        render_positions(world.organs[o], buf.mesh_positions);
+      }
+      const Eigen::Index n = buf.mesh_positions.cols();
+      const double* x = buf.mesh_positions.data();
       for (Eigen::Index k = 0; k < 3 * n; ++k) buf.positions[k] = static_cast<float>(x[k]);
       mesh::vertex_normals(x, static_cast<int>(n), world.organs[o].geometry.mesh.surface.triangles,
                            buf.normals.data());

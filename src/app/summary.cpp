@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "sim/step_size.h"
+
 namespace systole::app {
 namespace {
 
@@ -46,6 +48,26 @@ std::string summarize(const scene::Scene& scene, const World& world) {
     s << (m.volume.enabled ? ", 1 volume constraint" : ", no volume constraint");
     if (!m.pokes.empty() || !m.grabs.empty()) s << ", " << m.pokes.size() << " pokes, " << m.grabs.size() << " grabs";
     s << "\n";
+    const auto pinned = (m.inverse_mass.array() == 0).count();
+    s << "  built: " << m.particle_count() << " particles";
+    if (body.embedding.empty()) {
+      s << " (full model: every vertex)";
+    } else {
+      s << " (lattice " << organ.body.lattice << ": voxel corners; the " << report.vertices << " render vertices follow by embedding)";
+    }
+    if (pinned > 0) s << ", " << pinned << " pinned (held, not solved; no spring between two of them)";
+    s << "\n  left out:";
+    int left_out = 0;
+    if (m.springs.bending_count == 0) s << (left_out++ ? "," : "") << " bending (body.bending is 0)";
+    if (!m.volume.enabled) {
+      s << (left_out++ ? "," : "") << " volume constraint ("
+        << (organ.body.volume_stiffness_Pa > 0 ? "the surface is open" : "body.volume_stiffness is 0") << ")";
+    }
+    if (body.embedding.empty()) s << (left_out++ ? "," : "") << " reduction (body.lattice is 0)";
+    if (left_out == 0) s << " nothing";
+    const double cost = sim::estimated_cost_s_per_s(m, world.dt_s);
+    s << "\n  cost estimate: " << cost * 1e3 << " ms per simulated second on one thread (" << (cost > 0 ? 1.0 / cost : 0.0)
+      << "x real time; `systole bench` measures)\n";
   }
   s << "solver " << method_name(scene.solver.method) << ": dt " << world.dt_s * 1e3 << " ms ("
     << world.steps_per_frame << " steps per frame)";

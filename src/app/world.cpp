@@ -72,13 +72,21 @@ World build_world(const scene::Scene& scene) {
     for (const auto& in : scene.interactions) {
       if (in.organ == organ.name) options.interactions.push_back(in);
     }
-    body.model = sim::build_model(organ, body.geometry, options);
+    if (organ.body.lattice > 0) {
+      sim::ReducedBody reduced = sim::build_reduced_model(organ, body.geometry, options);
+      body.model = std::move(reduced.model);
+      body.embedding = std::move(reduced.embedding);
+    } else {
+      body.model = sim::build_model(organ, body.geometry, options);
+    }
     body.state = sim::initial_state(body.model);
     w.organs.push_back(std::move(body));
   }
   if (scene.solver.auto_dt) choose_steps(w, frame_s);
   return w;
 }
+
+void render_positions(const OrganBody& body, Eigen::Matrix3Xd& out) { sim::embed(body.embedding, body.state.x, out); }
 
 void advance_to_frame(World& w, int frame) {
   for (; w.frames_done < frame; ++w.frames_done) {

@@ -8,15 +8,21 @@
 #include "mesh/organ.h"
 #include "scene/scene.h"
 #include "sim/model.h"
+#include "sim/reduced.h"
 #include "sim/state.h"
 
 namespace systole::app {
 
 struct OrganBody {
-  mesh::OrganGeometry geometry;
+  mesh::OrganGeometry geometry;  ///< The render mesh.
   sim::Model model;
   sim::State state;
+  sim::Embedding embedding;      ///< How the render mesh follows a reduced model; empty: full model.
 };
+
+/// The body's render-mesh positions now: the particles of a full model, or the mesh
+/// embedded in a reduced model's lattice. unit: m
+void render_positions(const OrganBody& body, Eigen::Matrix3Xd& out);
 
 struct World {
   std::vector<OrganBody> organs;

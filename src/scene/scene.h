@@ -94,6 +94,7 @@ struct Region {
   double stiffness_scale = 1;  ///< Multiplies the body's stiffness. unit: 1
   double damping_scale = 1;    ///< Multiplies the body's damping. unit: 1
   bool pinned = false;         ///< Fixed in place: costs nothing in the solve.
+  int detail = 1;              ///< Reduced model only: the region's voxels split into detail^3 (1, 2 or 4).
   /// Pinned regions only: offsets from the rest position over time (a kinematic region,
   /// e.g. a vessel stub moved by breathing). Empty: the region stays at rest.
   std::vector<PathKey> motion;
@@ -133,6 +134,7 @@ struct Body {
   double volume_stiffness_Pa = 20000;  ///< Bulk modulus of the enclosed volume; 0 = no volume constraint. unit: Pa
   double drag_per_s = 1.0;        ///< Velocity damping towards rest (the surrounding tissue). unit: 1/s
   double bending_N_per_m = 0;     ///< Stiffness of the springs across each edge (0: no bending). unit: N/m
+  int lattice = 0;                ///< Reduced model: voxels along the longest side (0: every vertex a particle). unit: 1
   /// Drives the rest volume, V0(t) = V0 (1 + amplitude * phi(t - delay)): lungs inflating.
   /// waveform kNone: a constant rest volume. Needs the volume constraint.
   Drive volume_drive;

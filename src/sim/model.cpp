@@ -27,25 +27,6 @@ std::vector<std::pair<int, int>> unique_edges(const std::vector<Eigen::Vector3i>
   return edges;
 }
 
-/// Lumped masses: each triangle gives a third of its share of the organ's mass to each corner.
-Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles,
-                              double total_mass_kg) {
-  Eigen::VectorXd area = Eigen::VectorXd::Zero(x.cols());
-  double total_area = 0;
-  for (const auto& t : triangles) {
-    const double a = 0.5 * (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0])).norm();
-    for (int k = 0; k < 3; ++k) area[t[k]] += a / 3.0;
-    total_area += a;
-  }
-  Eigen::VectorXd mass(x.cols());
-  // A vertex in no triangle (or only degenerate ones) still needs a finite mass.
-  const double floor_kg = total_mass_kg / double(std::max<Eigen::Index>(1, x.cols())) * 1e-3;
-  for (Eigen::Index i = 0; i < x.cols(); ++i) {
-    mass[i] = std::max(floor_kg, total_area > 0 ? total_mass_kg * area[i] / total_area : 0.0);
-  }
-  return mass;
-}
-
 /// For each edge shared by exactly two triangles, the two corners opposite it: a spring
 /// between them resists folding about the edge (a cheap bending model that works the same
 /// in every solver, unlike dihedral-angle constraints).
@@ -76,9 +57,9 @@ std::vector<int> particles_near(const Eigen::Matrix3Xd& x, const Eigen::Vector3d
   return found;
 }
 
-void add_interactions(Model& m, const std::vector<scene::Interaction>& interactions) {
+void add_interactions(Model& m, const std::vector<scene::Interaction>& interactions, double reach_m) {
   for (const auto& in : interactions) {
-    std::vector<int> patch = particles_near(m.rest_positions, in.at_m, in.radius_m);
+    std::vector<int> patch = particles_near(m.rest_positions, in.at_m, in.radius_m + reach_m);
     if (patch.empty()) {
       throw Error(ExitCode::kDataError,
                   in.origin.file + ":" + std::to_string(in.origin.line) + ":" + std::to_string(in.origin.column) +
@@ -112,8 +93,49 @@ double enclosed_volume(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vecto
   return six_v / 6.0;
 }
 
+Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles,
+                              double total_mass_kg) {
+  Eigen::VectorXd area = Eigen::VectorXd::Zero(x.cols());
+  double total_area = 0;
+  for (const auto& t : triangles) {
+    const double a = 0.5 * (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0])).norm();
+    for (int k = 0; k < 3; ++k) area[t[k]] += a / 3.0;
+    total_area += a;
+  }
+  Eigen::VectorXd mass(x.cols());
+  // A vertex in no triangle (or only degenerate ones) still needs a finite mass.
+  const double floor_kg = total_mass_kg / double(std::max<Eigen::Index>(1, x.cols())) * 1e-3;
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    mass[i] = std::max(floor_kg, total_area > 0 ? total_mass_kg * area[i] / total_area : 0.0);
+  }
+  return mass;
+}
+
 Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options) {
   const auto& surface = geometry.mesh.surface;
+  BodyParts parts;
+  const int n = static_cast<int>(surface.positions.size());
+  parts.rest_positions.resize(3, n);
+  for (int i = 0; i < n; ++i) parts.rest_positions.col(i) = surface.positions[i];
+  parts.mass_kg = lumped_masses(parts.rest_positions, surface.triangles, organ.body.mass_kg);
+  parts.particle_region = geometry.vertex_region;
+  // Springs on every surface edge, then (when asked for) bending springs across every
+  // interior edge.
+  parts.springs = unique_edges(surface.triangles);
+  parts.stretch_count = static_cast<int>(parts.springs.size());
+  parts.spring_stiffness_N_per_m.assign(parts.springs.size(), organ.body.stiffness_N_per_m);
+  if (organ.body.bending_N_per_m > 0) {
+    for (const auto& pair : opposite_corners(surface.triangles)) {
+      parts.springs.push_back(pair);
+      parts.spring_stiffness_N_per_m.push_back(organ.body.bending_N_per_m);
+    }
+  }
+  // "Enclosed volume" means nothing on an open surface.
+  if (geometry.report.encloses_volume()) parts.volume_triangles = surface.triangles;
+  return build_model(organ, std::move(parts), options);
+}
+
+Model build_model(const scene::Organ& organ, BodyParts parts, const ModelOptions& options) {
   Model m;
   m.name = organ.name;
   m.method = options.solver.method;
@@ -132,17 +154,15 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
     }
     m.beat_boundaries.push_back(std::move(beats));
   }
-  m.vertex_region = geometry.vertex_region;
+  m.vertex_region = std::move(parts.particle_region);
 
-  const int n = static_cast<int>(surface.positions.size());
-  m.rest_positions.resize(3, n);
-  for (int i = 0; i < n; ++i) m.rest_positions.col(i) = surface.positions[i];
+  const int n = static_cast<int>(parts.rest_positions.cols());
+  m.rest_positions = std::move(parts.rest_positions);
   if (n > 0) {
     m.rest_extent_m = (m.rest_positions.rowwise().maxCoeff() - m.rest_positions.rowwise().minCoeff()).norm();
   }
 
-  const Eigen::VectorXd mass = lumped_masses(m.rest_positions, surface.triangles, organ.body.mass_kg);
-  m.inverse_mass = mass.cwiseInverse();
+  m.inverse_mass = parts.mass_kg.cwiseInverse();
   auto region_of = [&](int v) { return m.vertex_region.empty() ? -1 : m.vertex_region[v]; };
   for (int i = 0; i < n; ++i) {
     const int r = region_of(i);
@@ -157,20 +177,16 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
     m.kinematic.push_back(std::move(k));
   }
 
-  // Springs on every surface edge, then (when asked for) bending springs across every
-  // interior edge; a spring between two pinned particles does nothing and is not built.
+  // A spring between two pinned particles does nothing and is not built.
   std::vector<int> a, b;
   std::vector<double> stiffness;
-  auto add = [&](int i, int j, double k) {
-    if (m.inverse_mass[i] == 0 && m.inverse_mass[j] == 0) return false;
+  for (std::size_t p = 0; p < parts.springs.size(); ++p) {
+    const auto [i, j] = parts.springs[p];
+    if (m.inverse_mass[i] == 0 && m.inverse_mass[j] == 0) continue;
     a.push_back(i);
     b.push_back(j);
-    stiffness.push_back(k);
-    return true;
-  };
-  for (const auto& [i, j] : unique_edges(surface.triangles)) m.springs.stretch_count += add(i, j, organ.body.stiffness_N_per_m);
-  if (organ.body.bending_N_per_m > 0) {
-    for (const auto& [i, j] : opposite_corners(surface.triangles)) m.springs.bending_count += add(i, j, organ.body.bending_N_per_m);
+    stiffness.push_back(parts.spring_stiffness_N_per_m[p]);
+    ++(static_cast<int>(p) < parts.stretch_count ? m.springs.stretch_count : m.springs.bending_count);
   }
   const std::vector<int> color = color_pairs(a, b, n);
   const int colors = a.empty() ? 0 : *std::max_element(color.begin(), color.end()) + 1;
@@ -201,13 +217,14 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
     s.region_b.push_back(rj);
   }
 
-  // The volume constraint needs a closed surface: on an open one "enclosed volume" means nothing.
-  if (organ.body.volume_stiffness_Pa > 0 && geometry.report.encloses_volume()) {
+  // The volume constraint needs a closed surface.
+  if (organ.body.volume_stiffness_Pa > 0 && !parts.volume_triangles.empty()) {
     m.volume.enabled = true;
-    m.volume.triangles = surface.triangles;
-    m.volume.rest_m3 = enclosed_volume(m.rest_positions, surface.triangles);
-    m.volume.compliance_m5_per_N = m.volume.rest_m3 / organ.body.volume_stiffness_Pa;
+    m.volume.triangles = std::move(parts.volume_triangles);
+    m.volume.rest_m3 = enclosed_volume(m.rest_positions, m.volume.triangles);
+    m.volume.compliance_m5_per_N = m.volume.rest_m3 / (organ.body.volume_stiffness_Pa * parts.volume_stiffness_scale);
     m.volume.drive = organ.body.volume_drive;
+    m.volume.drive.amplitude *= parts.volume_drive_scale;
     const scene::Drive& d = m.volume.drive;
     if (d.irregularity > 0 && d.waveform != scene::Waveform::kNone) {
       // Its own stream after the regions', so adding it changes no region's beats.
@@ -222,7 +239,7 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
                                                ? std::string("a closed surface (this one is open or non-manifold: see the mesh report)")
                                                : std::string("body.volume_stiffness > 0")));
   }
-  add_interactions(m, options.interactions);
+  add_interactions(m, options.interactions, parts.interaction_reach_m);
   return m;
 }
 

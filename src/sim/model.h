@@ -101,7 +101,30 @@ struct Model {
   int particle_count() const { return static_cast<int>(rest_positions.cols()); }
 };
 
-/// Builds the body of one organ. Throws Error(kDataError) when an interaction touches no
+/// The particles and springs of a body before regions, drives, volume and interactions are
+/// attached: every surface vertex (build_model below) or a lattice (sim/reduced.h).
+struct BodyParts {
+  Eigen::Matrix3Xd rest_positions;                ///< unit: m
+  Eigen::VectorXd mass_kg;                        ///< Per particle. unit: kg
+  std::vector<int> particle_region;               ///< Per particle: region index, or -1 (undriven body).
+  std::vector<std::pair<int, int>> springs;       ///< Stretch springs first, then bending springs.
+  std::vector<double> spring_stiffness_N_per_m;   ///< Per spring, before region scales. unit: N/m
+  int stretch_count = 0;                          ///< How many of `springs` are stretch springs.
+  std::vector<Eigen::Vector3i> volume_triangles;  ///< Closed, outward surface; empty: it encloses nothing.
+  double volume_stiffness_scale = 1;  ///< Multiplies the bulk modulus (a lattice's hull is not the mesh). unit: 1
+  double volume_drive_scale = 1;      ///< Multiplies body.volume_drive's amplitude (idem). unit: 1
+  double interaction_reach_m = 0;     ///< Added to an interaction's radius when choosing its particles. unit: m
+};
+
+/// Lumped masses: each triangle gives a third of its share of the organ's mass to each corner. unit: kg
+Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles,
+                              double total_mass_kg);
+
+/// The body of one organ from given parts (what build_model does after taking the parts
+/// from the surface). Same errors as build_model.
+Model build_model(const scene::Organ& organ, BodyParts parts, const ModelOptions& options);
+
+/// Builds the body of one organ, every surface vertex a particle. Throws Error(kDataError) when an interaction touches no
 /// particle (naming it and where it was written).
 Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options);
 

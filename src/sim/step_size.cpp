@@ -94,4 +94,14 @@ StepLimits step_limits(const Model& m) {
   return limits;
 }
 
+double estimated_cost_s_per_s(const Model& model, double dt_s) {
+  const double work = model.springs.size() + (model.volume.enabled ? double(model.volume.triangles.size()) : 0.0);
+  switch (model.method) {
+    case scene::SolverMethod::kXpbd: return work * model.substeps / dt_s / 74e6;
+    case scene::SolverMethod::kExplicit: return work * model.substeps / dt_s / 95e6;
+    case scene::SolverMethod::kImplicit: return work / dt_s / 0.2e6;
+  }
+  return 0;
+}
+
 }  // namespace systole::sim

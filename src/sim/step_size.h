@@ -28,6 +28,13 @@ StepLimits step_limits(const Model& model);
 /// particles of w_i * sum over its springs of 2 k. unit: rad^2/s^2
 double max_omega_squared(const Model& model);
 
+/// Rough wall time one thread spends per simulated second stepping `model` at dt_s: its
+/// springs (and volume triangles, each counted as a spring) times the solver's steps,
+/// at the throughputs bench/sim_bench measured on the development machine (XPBD ~74 M,
+/// explicit ~95 M spring updates per second; implicit ~0.2 M springs per second per step,
+/// its conjugate-gradient solve). For `validate`; `systole bench` measures. unit: s/s
+double estimated_cost_s_per_s(const Model& model, double dt_s);
+
 /// Highest drive frequency of any region. unit: Hz
 double highest_drive_frequency_hz(const Model& model);
 

@@ -1,0 +1,106 @@
+#include <iostream>
+#include <memory>
+
+#include "app/bench.h"
+#include "cli/command.h"
+#include "common/error.h"
+#include "encode/png.h"
+#include "plot/plot.h"
+#include "scene/load.h"
+
+namespace systole::cli {
+namespace {
+
+/// A step as "1/240", "0.004" (seconds) or "auto" (0: the solver's stable step).
+double parse_step(const std::string& text) {
+  try {
+    if (text == "auto") return 0;
+    const auto slash = text.find('/');
+    std::size_t used = 0;
+    double value = 0;
+    if (slash == std::string::npos) {
+      value = std::stod(text, &used);
+      if (used != text.size()) throw std::invalid_argument(text);
+    } else {
+      const double num = std::stod(text.substr(0, slash), &used);
+      if (used != slash) throw std::invalid_argument(text);
+      const std::string den_text = text.substr(slash + 1);
+      const double den = std::stod(den_text, &used);
+      if (used != den_text.size() || den <= 0) throw std::invalid_argument(text);
+      value = num / den;
+    }
+    if (!(value > 0 && value <= 1)) throw std::invalid_argument(text);
+    return value;
+  } catch (const std::logic_error&) {
+    throw Error(ExitCode::kUsage, "--dt: expected a step in seconds such as 1/240 or 0.004, or auto; got '" + text + "'");
+  }
+}
+
+}  // namespace
+
+Command add_bench_command(CLI::App& app) {
+  struct Options {
+    std::string scene;
+    std::vector<std::string> defines;
+    std::string output;
+    double duration_s = 0;
+    std::vector<std::string> methods, dts;
+    std::vector<int> substeps, lattices;
+    std::string reference_dt = "1/960";
+    int reference_substeps = 32;
+  };
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand("bench", "Speed versus error: run the scene's organs over solver x step x model "
+                                          "configurations against a reference; print a table, write CSV and a plot.");
+  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
+  add_define_option(*cmd, o->defines);
+  cmd->add_option("-o,--output", o->output, "Prefix of the outputs: PREFIX.csv and PREFIX.png (default out/<scene>-bench)");
+  cmd->add_option("--duration", o->duration_s, "Simulated seconds per run (default: whole beats covering 2 s)")
+      ->check(CLI::Range(0.1, 60.0));
+  cmd->add_option("--method", o->methods, "Narrow the grid: solvers (xpbd, implicit, explicit)")
+      ->check(CLI::IsMember({"xpbd", "implicit", "explicit"}))
+      ->delimiter(',');
+  cmd->add_option("--dt", o->dts, "Narrow the grid: steps (1/240, 0.004, auto)")->delimiter(',');
+  cmd->add_option("--substeps", o->substeps, "Narrow the grid: XPBD substeps")->check(CLI::Range(1, 1000))->delimiter(',');
+  cmd->add_option("--lattice", o->lattices, "Narrow the grid: models (0 = full, N = lattice of N voxels along the longest side)")
+      ->check(CLI::Range(0, 64))
+      ->delimiter(',');
+  cmd->add_option("--reference-dt", o->reference_dt, "Step of the reference run")->capture_default_str();
+  cmd->add_option("--reference-substeps", o->reference_substeps, "XPBD substeps of the reference run")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  return {cmd, [o] {
+            const auto scene = scene::load(o->scene, o->defines);
+            app::BenchOptions options;
+            options.duration_s = o->duration_s;
+            options.reference_dt_s = parse_step(o->reference_dt);
+            options.reference_substeps = o->reference_substeps;
+            if (options.reference_dt_s == 0) throw Error(ExitCode::kUsage, "--reference-dt needs a step, not auto");
+            if (!o->methods.empty() || !o->dts.empty() || !o->substeps.empty() || !o->lattices.empty()) {
+              std::vector<scene::SolverMethod> methods;
+              for (const auto& m : o->methods) {
+                methods.push_back(m == "xpbd" ? scene::SolverMethod::kXpbd
+                                  : m == "implicit" ? scene::SolverMethod::kImplicit
+                                                    : scene::SolverMethod::kExplicit);
+              }
+              if (methods.empty()) methods = {scene::SolverMethod::kXpbd, scene::SolverMethod::kImplicit, scene::SolverMethod::kExplicit};
+              std::vector<double> dts;
+              for (const auto& d : o->dts) dts.push_back(parse_step(d));
+              if (dts.empty()) dts = {1.0 / 240.0};
+              options.grid = app::grid_of(methods, dts, o->substeps.empty() ? std::vector<int>{4} : o->substeps,
+                                          o->lattices.empty() ? std::vector<int>{0} : o->lattices);
+            }
+            const app::BenchReport report =
+                app::run_bench(scene, options, [](const std::string& run) { std::cerr << "bench: " << run << "\n"; });
+            std::cout << app::format_table(report);
+            const std::string prefix = o->output.empty() ? "out/" + scene.name + "-bench" : o->output;
+            const std::filesystem::path csv = prefix + ".csv", png = prefix + ".png";
+            if (csv.has_parent_path()) std::filesystem::create_directories(csv.parent_path());
+            app::write_csv(csv, report);
+            encode::write_png(png, plot::render(app::speed_error_figure(report)));
+            std::cout << "wrote " << csv.string() << " and " << png.string() << "\n";
+            return 0;
+          }};
+}
+
+}  // namespace systole::cli

@@ -1,0 +1,281 @@
+#include "plot/plot.h"
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <memory>
+
+#include "common/error.h"
+
+namespace systole::plot {
+namespace {
+
+constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+/// An image with blending: every drawing call takes a coverage in [0, 1] per pixel.
+class Canvas {
+ public:
+  explicit Canvas(Image& image) : image_(image) {}
+
+  void blend(int x, int y, const Rgb& c, double coverage) {
+    if (x < 0 || y < 0 || x >= image_.width || y >= image_.height || coverage <= 0) return;
+    const double a = std::min(1.0, coverage);
+    std::uint8_t* p = image_.row(y) + 3 * static_cast<std::size_t>(x);
+    for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>(std::lround(p[k] + a * (c[k] - p[k])));
+  }
+
+  /// Antialiased segment of the given width: coverage from the distance to the segment.
+  void line(double x0, double y0, double x1, double y1, const Rgb& c, double width) {
+    const double r = 0.5 * width;
+    const int xa = int(std::floor(std::min(x0, x1) - r - 1)), xb = int(std::ceil(std::max(x0, x1) + r + 1));
+    const int ya = int(std::floor(std::min(y0, y1) - r - 1)), yb = int(std::ceil(std::max(y0, y1) + r + 1));
+    const double dx = x1 - x0, dy = y1 - y0, len2 = dx * dx + dy * dy;
+    for (int y = std::max(ya, 0); y <= std::min(yb, image_.height - 1); ++y) {
+      for (int x = std::max(xa, 0); x <= std::min(xb, image_.width - 1); ++x) {
+        const double px = x + 0.5 - x0, py = y + 0.5 - y0;
+        const double t = len2 > 0 ? std::clamp((px * dx + py * dy) / len2, 0.0, 1.0) : 0.0;
+        const double d = std::hypot(px - t * dx, py - t * dy);
+        blend(x, y, c, r + 0.5 - d);
+      }
+    }
+  }
+
+  void marker(double cx, double cy, Marker m, double size, const Rgb& c) {
+    const double r = 0.5 * size;
+    for (int y = int(cy - r - 2); y <= int(cy + r + 2); ++y) {
+      for (int x = int(cx - r - 2); x <= int(cx + r + 2); ++x) {
+        const double px = x + 0.5 - cx, py = y + 0.5 - cy;
+        double d = 0;  // Signed distance to the outline, negative inside.
+        switch (m) {
+          case Marker::kNone: return;
+          case Marker::kCircle: d = std::hypot(px, py) - r; break;
+          case Marker::kSquare: d = std::max(std::abs(px), std::abs(py)) - 0.8 * r; break;
+          case Marker::kDiamond: d = (std::abs(px) + std::abs(py) - 1.2 * r) / std::sqrt(2.0); break;
+          case Marker::kRing: d = std::abs(std::hypot(px, py) - r) - 1.0; break;
+        }
+        blend(x, y, c, 0.5 - d);
+      }
+    }
+  }
+
+  void fill(int x0, int y0, int x1, int y1, const Rgb& c) {
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) blend(x, y, c, 1.0);
+    }
+  }
+
+ private:
+  Image& image_;
+};
+
+/// DejaVu Sans through FreeType, at one pixel size at a time.
+class Font {
+ public:
+  Font() {
+    if (FT_Init_FreeType(&library_) != 0) throw Error(ExitCode::kInternal, "FreeType failed to start");
+    if (!std::filesystem::exists(kFontPath) || FT_New_Face(library_, kFontPath, 0, &face_) != 0) {
+      FT_Done_FreeType(library_);
+      throw Error(ExitCode::kNoInput, std::string("cannot load the plot font ") + kFontPath +
+                                          " (install Debian's fonts-dejavu-core: scripts/install-deps)");
+    }
+  }
+  ~Font() {
+    FT_Done_Face(face_);
+    FT_Done_FreeType(library_);
+  }
+  Font(const Font&) = delete;
+  Font& operator=(const Font&) = delete;
+
+  void size(int px) { FT_Set_Pixel_Sizes(face_, 0, static_cast<FT_UInt>(px)); }
+
+  /// Advance width of `text`. unit: px
+  double width(const std::string& text) {
+    double w = 0;
+    for (unsigned char ch : text) {
+      if (FT_Load_Char(face_, ch, FT_LOAD_DEFAULT) == 0) w += face_->glyph->advance.x / 64.0;
+    }
+    return w;
+  }
+
+  /// Draws `text` with its baseline starting at (x, y); `vertical` turns it a quarter
+  /// turn counter-clockwise (reading upwards), starting at (x, y).
+  void draw(Canvas& canvas, const std::string& text, double x, double y, const Rgb& color, bool vertical = false) {
+    double pen = 0;
+    for (unsigned char ch : text) {
+      if (FT_Load_Char(face_, ch, FT_LOAD_RENDER) != 0) continue;
+      const FT_GlyphSlot g = face_->glyph;
+      for (unsigned row = 0; row < g->bitmap.rows; ++row) {
+        for (unsigned col = 0; col < g->bitmap.width; ++col) {
+          const double coverage = g->bitmap.buffer[row * g->bitmap.pitch + col] / 255.0;
+          const double u = pen + g->bitmap_left + col, v = double(row) - g->bitmap_top;
+          if (vertical) {
+            canvas.blend(int(std::lround(x + v)), int(std::lround(y - u)), color, coverage);
+          } else {
+            canvas.blend(int(std::lround(x + u)), int(std::lround(y + v)), color, coverage);
+          }
+        }
+      }
+      pen += g->advance.x / 64.0;
+    }
+  }
+
+ private:
+  FT_Library library_ = nullptr;
+  FT_Face face_ = nullptr;
+};
+
+std::string tick_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
+  return text;
+}
+
+/// Fits an axis without a range to the values it shows, with a margin.
+Axis fitted(Axis axis, const std::vector<double>& values) {
+  for (double v : values) {
+    if (!std::isfinite(v)) throw Error(ExitCode::kDataError, "plot: axis '" + axis.label + "' has a value that is not finite");
+    if (axis.scale == Scale::kLog && v <= 0) {
+      throw Error(ExitCode::kDataError, "plot: log axis '" + axis.label + "' cannot show " + tick_text(v));
+    }
+  }
+  if (axis.min < axis.max) return axis;
+  if (values.empty()) {
+    axis.min = axis.scale == Scale::kLog ? 1 : 0;
+    axis.max = axis.scale == Scale::kLog ? 10 : 1;
+    return axis;
+  }
+  double lo = *std::min_element(values.begin(), values.end()), hi = *std::max_element(values.begin(), values.end());
+  if (axis.scale == Scale::kLog) {
+    lo = std::log10(lo);
+    hi = std::log10(hi);
+  }
+  const double margin = hi > lo ? 0.08 * (hi - lo) : 0.5;
+  lo -= margin;
+  hi += margin;
+  axis.min = axis.scale == Scale::kLog ? std::pow(10.0, lo) : lo;
+  axis.max = axis.scale == Scale::kLog ? std::pow(10.0, hi) : hi;
+  return axis;
+}
+
+}  // namespace
+
+double axis_fraction(const Axis& axis, double value) {
+  if (axis.scale == Scale::kLog) {
+    return (std::log10(value) - std::log10(axis.min)) / (std::log10(axis.max) - std::log10(axis.min));
+  }
+  return (value - axis.min) / (axis.max - axis.min);
+}
+
+std::vector<double> ticks(const Axis& axis) {
+  std::vector<double> out;
+  if (axis.scale == Scale::kLog) {
+    const int first = int(std::floor(std::log10(axis.min))), last = int(std::ceil(std::log10(axis.max)));
+    // Decades only over a wide range; 1-2-5 over a few decades; every mantissa within one.
+    const double span = std::log10(axis.max / axis.min);
+    const std::vector<double> mantissas = span > 3 ? std::vector<double>{1} : span > 1 ? std::vector<double>{1, 2, 5}
+                                                                                        : std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9};
+    for (int e = first; e <= last; ++e) {
+      for (double m : mantissas) {
+        const double v = m * std::pow(10.0, e);
+        if (v >= axis.min * (1 - 1e-9) && v <= axis.max * (1 + 1e-9)) out.push_back(v);
+      }
+    }
+    return out;
+  }
+  const double raw = (axis.max - axis.min) / 6.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = decade;
+  for (double m : {1.0, 2.0, 5.0, 10.0}) {
+    step = m * decade;
+    if (step >= raw) break;
+  }
+  for (double v = std::ceil(axis.min / step) * step; v <= axis.max + 1e-9 * step; v += step) out.push_back(v);
+  return out;
+}
+
+Image render(const Figure& figure) {
+  std::vector<double> xs, ys;
+  for (const auto& s : figure.series) {
+    for (const auto& p : s.points) {
+      xs.push_back(p.x);
+      ys.push_back(p.y);
+    }
+  }
+  const Axis x_axis = fitted(figure.x, xs), y_axis = fitted(figure.y, ys);
+
+  Image image(figure.width, figure.height);
+  std::fill(image.rgb.begin(), image.rgb.end(), std::uint8_t{255});
+  Canvas canvas(image);
+  Font font;
+  const Rgb ink{30, 30, 30}, grid{225, 225, 225};
+  const int left = 95, right = figure.width - 30, top = figure.title.empty() ? 30 : 60, bottom = figure.height - 75;
+  auto to_px = [&](double x, double y) {
+    return std::pair<double, double>{left + axis_fraction(x_axis, x) * (right - left),
+                                     bottom - axis_fraction(y_axis, y) * (bottom - top)};
+  };
+
+  font.size(15);
+  for (double t : ticks(x_axis)) {
+    const double px = to_px(t, y_axis.min).first;
+    canvas.line(px, top, px, bottom, grid, 1);
+    const std::string text = tick_text(t);
+    font.draw(canvas, text, px - font.width(text) / 2, bottom + 22, ink);
+  }
+  for (double t : ticks(y_axis)) {
+    const double py = to_px(x_axis.min, t).second;
+    canvas.line(left, py, right, py, grid, 1);
+    const std::string text = tick_text(t);
+    font.draw(canvas, text, left - 8 - font.width(text), py + 5, ink);
+  }
+  canvas.line(left, bottom, right, bottom, ink, 1.5);
+  canvas.line(left, top, left, bottom, ink, 1.5);
+
+  font.size(17);
+  font.draw(canvas, x_axis.label, (left + right) / 2.0 - font.width(x_axis.label) / 2, figure.height - 25, ink);
+  font.draw(canvas, y_axis.label, 28, (top + bottom) / 2.0 + font.width(y_axis.label) / 2, ink, true);
+  if (!figure.title.empty()) {
+    font.size(20);
+    font.draw(canvas, figure.title, (left + right) / 2.0 - font.width(figure.title) / 2, 35, ink);
+  }
+
+  font.size(12);
+  for (const auto& s : figure.series) {
+    for (std::size_t i = 0; s.line && i + 1 < s.points.size(); ++i) {
+      const auto [x0, y0] = to_px(s.points[i].x, s.points[i].y);
+      const auto [x1, y1] = to_px(s.points[i + 1].x, s.points[i + 1].y);
+      canvas.line(x0, y0, x1, y1, s.color, 2);
+    }
+    for (const auto& p : s.points) {
+      const auto [px, py] = to_px(p.x, p.y);
+      canvas.marker(px, py, s.marker, s.marker_px, s.color);
+      if (!p.label.empty()) font.draw(canvas, p.label, px + s.marker_px / 2 + 3, py - 3, ink);
+    }
+  }
+
+  // Legend, top right.
+  std::vector<const Series*> listed;
+  for (const auto& s : figure.series) {
+    if (!s.name.empty()) listed.push_back(&s);
+  }
+  if (!listed.empty()) {
+    font.size(14);
+    double w = 0;
+    for (const auto* s : listed) w = std::max(w, font.width(s->name));
+    const int row = 22, x0 = right - int(w) - 50, y0 = top + 10;
+    canvas.fill(x0, y0, right - 10, y0 + row * int(listed.size()) + 8, Rgb{248, 248, 248});
+    for (std::size_t i = 0; i < listed.size(); ++i) {
+      const double cy = y0 + 4 + row * (i + 0.5);
+      if (listed[i]->line) canvas.line(x0 + 6, cy, x0 + 30, cy, listed[i]->color, 2);
+      canvas.marker(x0 + 18, cy, listed[i]->marker, listed[i]->marker_px, listed[i]->color);
+      font.draw(canvas, listed[i]->name, x0 + 36, cy + 5, ink);
+    }
+  }
+  return image;
+}
+
+}  // namespace systole::plot
