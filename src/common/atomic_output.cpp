@@ -17,6 +17,9 @@ namespace {
 constexpr int kMaxPending = 64;
 constexpr std::size_t kMaxPath = 4096;
 enum SlotState : int { kFree = 0, kClaimed = 1, kReady = 2 };
+// The handler reads slot states on whichever thread the signal lands (the frame loop's
+// stages run on their own threads): only a lock-free atomic is safe there.
+static_assert(std::atomic<int>::is_always_lock_free);
 struct PendingSlot {
   std::atomic<int> state{kFree};
   char path[kMaxPath] = {};

@@ -304,6 +304,9 @@ int collapse_short_edges(const RaySurface& surface, Vertices& V, std::vector<Fac
   for (const auto& [length, e] : candidates) {
     const Edge edge = topo.edges[static_cast<size_t>(e)];
     const Face f0 = F[static_cast<size_t>(edge.face0)], f1 = F[static_cast<size_t>(edge.face1)];
+    // An earlier collapse in this pass removed this edge's faces: its corners read kDead
+    // (UBSan found locked[-1] through fuzz_scene; fuzz/regressions/scene/).
+    if (f0[0] == kDead || f1[0] == kDead) continue;
     const int a = f0[static_cast<size_t>(edge.slot0)], b = f0[static_cast<size_t>((edge.slot0 + 1) % 3)];
     if (locked[static_cast<size_t>(a)] || locked[static_cast<size_t>(b)]) continue;
     const int c = f0[static_cast<size_t>((edge.slot0 + 2) % 3)], d = f1[static_cast<size_t>((edge.slot1 + 2) % 3)];
