@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
       systole::cli::add_bake_command(app),
       systole::cli::add_info_command(app),
       systole::cli::add_bench_command(app),
+      systole::cli::add_tune_command(app),
   };
 
   try {

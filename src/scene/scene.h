@@ -140,6 +140,38 @@ struct Body {
   Drive volume_drive;
 };
 
+// ---------------------------------------------------------------------------------------
+// Training target (train/, `systole tune`): rough motion the organ should learn to make
+// by itself, and how to tune its regions to it.
+
+/// One key-frame mesh: the organ's surface (same vertices, same order) at a time of the cycle.
+struct TargetFrame {
+  std::string file;   ///< Resolved against the scene's folder by load().
+  double time_s = 0;  ///< Time within the target's period. unit: s
+};
+
+/// A region's size over one period, evenly spaced samples relative to the rest shape.
+struct TargetCurve {
+  std::string region;
+  bool volume = false;          ///< Samples are relative volumes (else relative linear scale).
+  std::vector<double> samples;  ///< unit: 1 (1 = rest)
+  Origin origin;
+};
+
+struct Target {
+  bool enabled = false;
+  double rate_hz = 0;                  ///< Cycles per second the target (and the tuned drives) run at. unit: Hz
+  std::vector<TargetFrame> frames;     ///< A key-frame mesh sequence over one period...
+  std::vector<TargetCurve> curves;     ///< ...or per-region size curves.
+  double coupling_N_per_m = 5000;      ///< Stiffness tying each particle to its target while recording. unit: N/m
+  int harmonics = 3;                   ///< Fourier harmonics of a fitted drive.
+  std::vector<std::string> lock;       ///< Parameters kept as written: `param`, `region` or `region.param`.
+  int budget = 300;                    ///< Playbacks the tuner may run.
+  double settle_cycles = 2;            ///< Cycles run before the error is measured. unit: cycles
+  double measure_cycles = 1;           ///< Cycles over which the error is measured. unit: cycles
+  Origin origin;
+};
+
 struct Organ {
   std::string name;
   MeshSource mesh;
@@ -147,6 +179,7 @@ struct Organ {
   Material material;
   Body body;
   std::vector<Region> regions;
+  Target target;                ///< enabled: `systole tune` fits the regions to it.
   Origin origin;
 };
 

@@ -527,6 +527,82 @@ ValueSpec<MeshSource> mesh_spec() {
   });
 }
 
+/// `target`: the motion `systole tune` fits the organ's regions to (train/).
+ValueSpec<Target> target_spec() {
+  auto frame = map<TargetFrame>({
+      field("file", path_text(), &TargetFrame::file, "Mesh file with the organ's vertices in the same order, in the organ mesh's units and frame.").required(),
+      field("time", quantity(Dimension::kTime, closed(0, 3600)), &TargetFrame::time_s, "Time of this key within the period.").required(),
+  }, [](const Node& node, TargetFrame& f, const std::string& path, const Context& ctx) {
+    const std::filesystem::path file = std::filesystem::path(f.file).is_absolute() ? std::filesystem::path(f.file) : ctx.base_dir / f.file;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+      throw Error(ExitCode::kNoInput, where(origin_of(node, "file")) + join(path, "file") + ": key-frame file not found: " + file.lexically_normal().string());
+    f.file = file.lexically_normal().string();
+  });
+  auto samples = list(number(open_closed(0, 10)), 2, 1024, "list of numbers");
+  auto curve = map<TargetCurve>({
+      field("region", name_text(), &TargetCurve::region, "The region whose size the curve gives.").required(),
+      field("scale", samples, &TargetCurve::samples, "Linear size relative to rest over one period, evenly spaced."),
+      field<TargetCurve, std::vector<double>>("volume", samples, [](TargetCurve& c) -> std::vector<double>& { c.volume = true; return c.samples; },
+            "Volume relative to rest over one period, evenly spaced (a ventricular volume curve)."),
+  }, [](const Node& node, TargetCurve& c, const std::string& path, const Context&) {
+    c.origin = node.origin;
+    if ((node.find("scale") != nullptr) == (node.find("volume") != nullptr))
+      fail(node.origin, path, "a curve has exactly one of scale, volume");
+  });
+  return map<Target>({
+      field("rate", quantity(Dimension::kFrequency, open_closed(0, 20)), &Target::rate_hz, "Cycles per unit time of the target; the tuned drives run at it.").required(),
+      field("frames", list(frame, 2, 4096, "list of key frames"), &Target::frames, "Key-frame meshes at times within one period, interpolated smoothly and periodically."),
+      field("curves", list(curve, 1, 256, "list of curves"), &Target::curves, "Per-region size curves over one period (instead of frames)."),
+      field("coupling", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Target::coupling_N_per_m, "Stiffness tying each particle to its target while the driving forces are recorded."),
+      field("harmonics", whole<int>(1, 16), &Target::harmonics, "Fourier harmonics of each fitted drive."),
+      field("lock", list(path_text(), 0, 1024, "list of names"), &Target::lock,
+            "Parameters the tuner keeps as the scene writes them: `amplitude`, `shape`, `delay`, `stiffness` (all regions), a region's name (all its parameters), or `region.param`."),
+      field("budget", whole<int>(0, 1000000), &Target::budget, "Playbacks the tuner may run (0: fit only)."),
+      field("settle", number(closed(0, 100)), &Target::settle_cycles, "Cycles run before the error is measured."),
+      field("measure", number(open_closed(0, 100)), &Target::measure_cycles, "Cycles over which the error is measured."),
+  }, [](const Node& node, Target& t, const std::string& path, const Context&) {
+    t.enabled = true;
+    t.origin = node.origin;
+    if (t.frames.empty() == t.curves.empty())
+      fail(node.origin, path, "expected exactly one of frames, curves");
+    const double period_s = 1.0 / t.rate_hz;
+    for (std::size_t i = 0; i < t.frames.size(); ++i) {
+      const Origin& at = node.find("frames")->items[i].origin;
+      if (i > 0 && t.frames[i].time_s <= t.frames[i - 1].time_s) fail(at, path + ".frames[" + std::to_string(i) + "].time", "times must increase");
+      if (t.frames[i].time_s >= period_s)
+        fail(at, path + ".frames[" + std::to_string(i) + "].time", "must lie within one period (" + format_quantity(period_s, Dimension::kTime) + " at this rate)");
+    }
+  });
+}
+
+/// The target's region names and lock entries must name the organ's regions.
+void check_target_names(const Node& node, const Organ& o, const std::string& path) {
+  if (!o.target.enabled) return;
+  const Node& target = *node.find("target");
+  auto region = [&](const std::string& name) {
+    return std::find_if(o.regions.begin(), o.regions.end(), [&](const Region& r) { return r.name == name; });
+  };
+  for (std::size_t i = 0; i < o.target.curves.size(); ++i) {
+    const TargetCurve& c = o.target.curves[i];
+    const auto r = region(c.region);
+    if (r == o.regions.end()) fail(c.origin, path + ".target.curves[" + std::to_string(i) + "].region", "the organ has no region '" + c.region + "'");
+    if (r->pinned) fail(c.origin, path + ".target.curves[" + std::to_string(i) + "].region", "region '" + c.region + "' is pinned: it cannot follow a curve");
+  }
+  const std::vector<std::string> params = {"amplitude", "shape", "delay", "stiffness"};
+  for (std::size_t i = 0; i < o.target.lock.size(); ++i) {
+    const std::string& entry = o.target.lock[i];
+    const std::size_t dot = entry.find('.');
+    const std::string head = entry.substr(0, dot), param = dot == std::string::npos ? "" : entry.substr(dot + 1);
+    const bool is_param = std::find(params.begin(), params.end(), head) != params.end() && dot == std::string::npos;
+    const bool good = is_param || (region(head) != o.regions.end() &&
+                                   (param.empty() || std::find(params.begin(), params.end(), param) != params.end()));
+    if (!good)
+      fail(target.find("lock")->items[i].origin, path + ".target.lock[" + std::to_string(i) + "]",
+           "expected amplitude, shape, delay, stiffness, a region's name, or region.param with one of those; got '" + entry + "'");
+  }
+}
+
 ValueSpec<Organ> organ_spec() {
   return map<Organ>({
       field("name", name_text(), &Organ::name, "Unique name; -D paths may use it (organs.heart.body.mass).").required(),
@@ -552,8 +628,10 @@ ValueSpec<Organ> organ_spec() {
                 field("volume_drive", drive_spec(), &Body::volume_drive, "Drives the rest volume instead of rest lengths: V0(t) = V0 (1 + amplitude phi(t - delay)), `amplitude` the fraction of volume added (lungs inflating). Needs `volume_stiffness` > 0 and a closed surface."),
             }), &Organ::body, "The soft body's physical parameters."),
       field("regions", list(region_spec(), 0, 256, "list of regions"), &Organ::regions, "Parts with their own rhythm and stiffness, applied in order."),
+      field("target", target_spec(), &Organ::target, "Motion for `systole tune` to fit the regions' drives to (docs/training.md).").shown_default("none"),
   }, [](const Node& node, Organ& o, const std::string& path, const Context&) {
     o.origin = node.origin;
+    check_target_names(node, o, path);
     for (std::size_t i = 0; i < o.regions.size(); ++i)
       for (std::size_t j = 0; j < i; ++j)
         if (o.regions[i].name == o.regions[j].name)

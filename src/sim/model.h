@@ -4,6 +4,7 @@
 // scene settings (MuJoCo's mjModel / mjData split: the changing part is sim::State).
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,18 @@ struct Grab {
   double compliance_m_per_N = 0;           ///< unit: m/N
 };
 
+/// Zero-length attachments of every free particle to a moving target position: how
+/// training couples the body to key-frame motion (train/). Each is three XPBD
+/// constraints C = x_i - target_i(t) (Macklin et al. 2016, eq. 18, target inverse mass 0),
+/// so State::attachment_lambda / h^2 is the force the coupling exerts. XPBD only.
+struct Attachments {
+  /// Writes every particle's target at time t into `out` (3 x particles); empty: none. unit: m
+  std::function<void(double t_s, Eigen::Matrix3Xd& out)> target;
+  double compliance_m_per_N = 0;  ///< unit: m/N
+
+  bool enabled() const { return static_cast<bool>(target); }
+};
+
 /// A pinned region that moves along a prescribed path: its particles are placed, not
 /// simulated (inverse mass 0), and pull their neighbours along through the springs.
 struct KinematicRegion {
@@ -95,6 +108,7 @@ struct Model {
   double rest_extent_m = 0;                 ///< Bounding-box diagonal of the rest shape. unit: m
   std::vector<Poke> pokes;
   std::vector<Grab> grabs;
+  Attachments attachments;                  ///< Training's coupling to a target; empty otherwise.
   std::vector<KinematicRegion> kinematic;
   scene::Floor floor;
 

@@ -37,11 +37,13 @@ struct State {
   Eigen::Matrix3Xd v;                ///< Velocities. unit: m/s
   Eigen::VectorXd spring_lambda;     ///< XPBD multipliers of the last substep; force = lambda / h^2. unit: N s^2
   double volume_lambda = 0;          ///< unit: N s^2 / m^2
+  Eigen::Matrix3Xd attachment_lambda;  ///< Per particle, the attachments' multipliers of the last substep; force = lambda / h^2. unit: N s^2
 
   // Scratch reused by every step so stepping never allocates.
   Eigen::Matrix3Xd x_prev;           ///< Positions at the start of the substep. unit: m
   Eigen::VectorXd region_contraction;  ///< amplitude * phi per region at the current substep. unit: 1
   Eigen::Matrix3Xd volume_gradient;  ///< dV/dx per particle. unit: m^2
+  Eigen::Matrix3Xd attachment_target;  ///< Attachment targets at the current substep. unit: m
   Eigen::Matrix3Xd force;            ///< Force per particle (explicit and implicit solvers). unit: N
   ImplicitScratch implicit;          ///< Matrix and solver of the implicit solver (built lazily).
 };

@@ -11,6 +11,9 @@
 namespace systole::sim {
 
 void step(const Model& model, State& state, double dt_s) {
+  if (model.attachments.enabled() && model.method != scene::SolverMethod::kXpbd) {
+    throw Error(ExitCode::kInternal, "attachments (training's coupling) are solved by XPBD only");
+  }
   switch (model.method) {
     case scene::SolverMethod::kXpbd:
       xpbd_step(model, state, dt_s);

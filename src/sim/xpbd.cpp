@@ -102,6 +102,21 @@ void solve_grabs(const Model& model, State& s, double t, double h) {
   }
 }
 
+/// Attachments to the training target: per particle and axis, C = x - target with
+/// compliance alpha (XPBD eq. 18 with the target's inverse mass 0), one multiplier each.
+void solve_attachments(const Model& model, State& s, double t, double h) {
+  if (!model.attachments.enabled()) return;
+  model.attachments.target(t, s.attachment_target);
+  const double alpha_tilde = model.attachments.compliance_m_per_N / (h * h);
+  for (Eigen::Index i = 0; i < s.x.cols(); ++i) {
+    const double w = model.inverse_mass[i];
+    if (w == 0) continue;
+    const Eigen::Vector3d dlambda = -(s.x.col(i) - s.attachment_target.col(i)) / (w + alpha_tilde);
+    s.attachment_lambda.col(i) += dlambda;
+    s.x.col(i) += w * dlambda;
+  }
+}
+
 }  // namespace
 
 void xpbd_step(const Model& model, State& s, double dt_s) {
@@ -126,9 +141,11 @@ void xpbd_step(const Model& model, State& s, double dt_s) {
     region_contractions(model.regions, model.beat_boundaries, t_end, model.ramp_s, s.region_contraction);
     s.spring_lambda.setZero();
     s.volume_lambda = 0;
+    s.attachment_lambda.setZero();
     solve_springs(model, s, h);
     solve_volume(model, s, t_end, h);
     solve_grabs(model, s, t_end, h);
+    solve_attachments(model, s, t_end, h);
     resolve_floor_contact(model, s.x);
     s.v = (s.x - s.x_prev) / h;
     s.time_s = t_end;

@@ -1,0 +1,145 @@
+#include "train/playback.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "app/world.h"
+#include "sim/step.h"
+
+namespace systole::train {
+
+Problem make_problem(const scene::Scene& scene, std::size_t organ_index) {
+  scene::Scene alone = scene;
+  alone.organs = {scene.organs[organ_index]};
+  alone.interactions.clear();
+  app::World world = app::build_world(alone);
+  app::OrganBody& body = world.organs.front();
+  const scene::Organ& organ = alone.organs.front();
+  Problem p{organ.name, std::move(body.model), world.dt_s, organ.target.rate_hz, 0, 0,
+            load_target(organ, body.geometry), {}, {}, {}};
+  const double steps_per_cycle = 1.0 / (p.rate_hz * p.dt_s);
+  p.settle_steps = static_cast<int>(std::lround(organ.target.settle_cycles * steps_per_cycle));
+  p.measure_steps = std::max(2, static_cast<int>(std::lround(organ.target.measure_cycles * steps_per_cycle)));
+  p.target_size.assign(p.model.regions.size(), {});
+  Eigen::Matrix3Xd x(3, p.model.particle_count());
+  for (int k = 1; k <= p.measure_steps; ++k) {
+    const double t = (p.settle_steps + k) * p.dt_s;
+    p.target.positions(p.rate_hz * t, x);
+    p.target_at_step.push_back(x);
+    p.target_volume_m3.push_back(p.model.volume.enabled ? sim::enclosed_volume(x, p.model.volume.triangles) : 0.0);
+    const std::vector<double> sizes = region_sizes(p.model, x);
+    for (std::size_t r = 0; r < sizes.size(); ++r) p.target_size[r].push_back(sizes[r]);
+  }
+  return p;
+}
+
+std::vector<double> region_sizes(const sim::Model& model, const Eigen::Matrix3Xd& x) {
+  const std::size_t regions = model.regions.size();
+  std::vector<Eigen::Vector3d> centroid(regions, Eigen::Vector3d::Zero()), rest_centroid = centroid;
+  std::vector<int> count(regions, 0);
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    const int r = model.vertex_region.empty() ? -1 : model.vertex_region[i];
+    if (r < 0) continue;
+    centroid[r] += x.col(i);
+    rest_centroid[r] += model.rest_positions.col(i);
+    ++count[r];
+  }
+  std::vector<double> spread(regions, 0.0), rest_spread(regions, 0.0);
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    const int r = model.vertex_region.empty() ? -1 : model.vertex_region[i];
+    if (r < 0) continue;
+    spread[r] += (x.col(i) - centroid[r] / count[r]).squaredNorm();
+    rest_spread[r] += (model.rest_positions.col(i) - rest_centroid[r] / count[r]).squaredNorm();
+  }
+  std::vector<double> size(regions, 1.0);
+  for (std::size_t r = 0; r < regions; ++r) {
+    if (rest_spread[r] > 0) size[r] = std::sqrt(spread[r] / rest_spread[r]);
+  }
+  return size;
+}
+
+double first_harmonic_phase(const std::vector<double>& samples, double t0_s, double dt_s, double rate_hz) {
+  double c = 0, s = 0;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const double w = 2.0 * std::numbers::pi * rate_hz * (t0_s + double(k) * dt_s);
+    c += samples[k] * std::cos(w);
+    s += samples[k] * std::sin(w);
+  }
+  return std::atan2(s, c);
+}
+
+PlaybackError play(const Problem& problem, const sim::Model& model) {
+  PlaybackError e;
+  const std::size_t regions = model.regions.size();
+  e.regions.assign(regions, {});
+  e.size.assign(regions, {});
+  sim::State state = sim::initial_state(model);
+  auto blew_up = [&] {
+    e.diverged = true;
+    e.rms_percent = e.max_percent = e.volume_percent = std::numeric_limits<double>::infinity();
+    for (auto& r : e.regions) r.rms_percent = std::numeric_limits<double>::infinity();
+    return e;
+  };
+  for (int k = 0; k < problem.settle_steps; ++k) sim::step(model, state, problem.dt_s);
+  if (sim::diagnose(model, state)) return blew_up();
+
+  std::vector<double> region_sq(regions, 0.0);
+  std::vector<int> region_count(regions, 0);
+  double sq = 0, volume_sq = 0, mean_volume = 0;
+  for (int k = 0; k < problem.measure_steps; ++k) {
+    sim::step(model, state, problem.dt_s);
+    const Eigen::Matrix3Xd& target = problem.target_at_step[k];
+    for (Eigen::Index i = 0; i < state.x.cols(); ++i) {
+      const double d2 = (state.x.col(i) - target.col(i)).squaredNorm();
+      sq += d2;
+      e.max_percent = std::max(e.max_percent, d2);
+      const int r = model.vertex_region.empty() ? -1 : model.vertex_region[i];
+      if (r >= 0) region_sq[r] += d2, ++region_count[r];
+    }
+    if (model.volume.enabled) {
+      const double v = sim::enclosed_volume(state.x, model.volume.triangles);
+      volume_sq += (v - problem.target_volume_m3[k]) * (v - problem.target_volume_m3[k]);
+      mean_volume += problem.target_volume_m3[k];
+    }
+    const std::vector<double> sizes = region_sizes(model, state.x);
+    for (std::size_t r = 0; r < regions; ++r) e.size[r].push_back(sizes[r]);
+  }
+  if (sim::diagnose(model, state) || !std::isfinite(sq)) return blew_up();
+
+  const double to_percent = 100.0 / model.rest_extent_m;
+  const double samples = double(problem.measure_steps) * double(state.x.cols());
+  e.rms_percent = std::sqrt(sq / samples) * to_percent;
+  e.max_percent = std::sqrt(e.max_percent) * to_percent;
+  if (model.volume.enabled && mean_volume > 0) {
+    mean_volume /= problem.measure_steps;
+    e.volume_percent = std::sqrt(volume_sq / problem.measure_steps) / mean_volume * 100.0;
+  }
+  const double t0 = problem.measure_start_s() + problem.dt_s;
+  for (std::size_t r = 0; r < regions; ++r) {
+    if (region_count[r] > 0) e.regions[r].rms_percent = std::sqrt(region_sq[r] / region_count[r]) * to_percent;
+    const double played = first_harmonic_phase(e.size[r], t0, problem.dt_s, problem.rate_hz);
+    const double wanted = first_harmonic_phase(problem.target_size[r], t0, problem.dt_s, problem.rate_hz);
+    e.regions[r].phase_deg = std::remainder(played - wanted, 2.0 * std::numbers::pi) * 180.0 / std::numbers::pi;
+  }
+  return e;
+}
+
+sim::Model with_regions(const sim::Model& base, const std::vector<scene::Region>& regions) {
+  sim::Model m = base;
+  auto blend = [](const std::vector<scene::Region>& rs, int a, int b) {
+    return 0.5 * ((a >= 0 ? rs[a].stiffness_scale : 1.0) + (b >= 0 ? rs[b].stiffness_scale : 1.0));
+  };
+  sim::Springs& sp = m.springs;
+  for (int j = 0; j < sp.size(); ++j) {
+    sp.compliance_m_per_N[j] *= blend(base.regions, sp.region_a[j], sp.region_b[j]) / blend(regions, sp.region_a[j], sp.region_b[j]);
+  }
+  m.regions = regions;
+  // A regular drive has no beat boundaries; an irregular one keeps the scene's seeded beats.
+  for (std::size_t r = 0; r < regions.size() && r < m.beat_boundaries.size(); ++r) {
+    if (regions[r].drive.irregularity == 0) m.beat_boundaries[r].clear();
+  }
+  return m;
+}
+
+}  // namespace systole::train

@@ -1,0 +1,65 @@
+#pragma once
+// A training problem - one organ, its body and its target on a fixed time grid - and the
+// error of the body running free (no coupling) against the target.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "sim/model.h"
+#include "train/target.h"
+
+namespace systole::train {
+
+struct Problem {
+  std::string organ;
+  sim::Model model;           ///< The organ's body as the scene builds it, without interactions.
+  double dt_s = 0;            ///< The scene's step. unit: s
+  double rate_hz = 0;         ///< The target's rate. unit: Hz
+  int settle_steps = 0;       ///< Steps before the error is measured.
+  int measure_steps = 0;      ///< Steps over which it is measured.
+  TargetMotion target;
+  std::vector<Eigen::Matrix3Xd> target_at_step;  ///< Target positions at each measured step. unit: m
+  std::vector<double> target_volume_m3;          ///< Enclosed volume of the target at each measured step. unit: m^3
+  /// Per region and measured step: the target's region size (RMS distance of its vertices
+  /// from their centroid) relative to rest. unit: 1
+  std::vector<std::vector<double>> target_size;
+
+  double measure_start_s() const { return settle_steps * dt_s; }
+};
+
+/// Builds the problem of the scene's organ `organ_index` (which must have a target): the
+/// scene's body, step and solver, interactions left out (tuning fits the undisturbed rhythm).
+Problem make_problem(const scene::Scene& scene, std::size_t organ_index);
+
+/// Per region: the region's size relative to rest at positions x. unit: 1
+std::vector<double> region_sizes(const sim::Model& model, const Eigen::Matrix3Xd& x);
+
+struct RegionError {
+  double rms_percent = 0;   ///< RMS vertex error of the region, % of the organ's bounding diagonal.
+  double phase_deg = 0;     ///< Phase of the region size's first harmonic, played minus target. unit: deg
+};
+
+struct PlaybackError {
+  double rms_percent = 0;     ///< RMS vertex error over vertices and time, % of the bounding diagonal.
+  double max_percent = 0;     ///< Largest vertex error at any time, % of the bounding diagonal.
+  double volume_percent = 0;  ///< RMS enclosed-volume error, % of the target's mean volume.
+  std::vector<RegionError> regions;
+  std::vector<std::vector<double>> size;  ///< Per region and measured step, as Problem::target_size.
+  bool diverged = false;      ///< The body blew up: every error is then infinite.
+};
+
+/// Runs `model` (a copy of problem.model with other drives) free from rest and measures it
+/// against the target after the settling steps.
+PlaybackError play(const Problem& problem, const sim::Model& model);
+
+/// The base model with the regions' drives and stiffness scales replaced: spring
+/// compliances follow the new stiffness scales with the same blending across region
+/// boundaries as sim::build_model.
+sim::Model with_regions(const sim::Model& base, const std::vector<scene::Region>& regions);
+
+/// Phase of the first harmonic at `rate_hz` of samples taken every dt from t0. unit: rad
+double first_harmonic_phase(const std::vector<double>& samples, double t0_s, double dt_s, double rate_hz);
+
+}  // namespace systole::train

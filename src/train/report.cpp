@@ -1,0 +1,101 @@
+#include "train/report.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "common/atomic_output.h"
+#include "common/error.h"
+#include "train/svg_plot.h"
+
+namespace systole::train {
+
+namespace {
+
+std::string plot_name(const OrganTuning& t, const scene::Region& r) { return t.organ + "-" + r.name + ".svg"; }
+
+std::string fixed(double v, int digits = 3) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(digits);
+  s << v;
+  return s.str();
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  AtomicOutput out(path);
+  {
+    std::ofstream file(out.temp_path(), std::ios::binary);
+    file << text;
+    if (!file.flush()) throw Error(ExitCode::kIoError, "cannot write " + path.string());
+  }
+  out.commit();
+}
+
+}  // namespace
+
+std::string report_markdown(const std::string& scene_path, const std::vector<OrganTuning>& tunings) {
+  std::ostringstream o;
+  o << "# Tuning report: " << scene_path << "\n\n"
+    << "Errors are measured with the body running free (no coupling) over the measured cycles, "
+       "after the settling ones: vertex errors in % of the organ's bounding diagonal, volume error "
+       "in % of the target's mean volume, phase of each region's size (first harmonic) in degrees.\n\n";
+  for (const OrganTuning& t : tunings) {
+    o << "## " << t.organ << "\n\n"
+      << "| drives | RMS % | max % | volume % |\n|---|---|---|---|\n"
+      << "| as written | " << fixed(t.written.rms_percent) << " | " << fixed(t.written.max_percent) << " | " << fixed(t.written.volume_percent) << " |\n"
+      << "| fitted from forces (untuned) | " << fixed(t.before.rms_percent) << " | " << fixed(t.before.max_percent) << " | " << fixed(t.before.volume_percent) << " |\n"
+      << "| tuned | " << fixed(t.after.rms_percent) << " | " << fixed(t.after.max_percent) << " | " << fixed(t.after.volume_percent) << " |\n\n"
+      << t.parameters.size() << " free parameters; " << t.generations << " CMA-ES generations, " << t.evaluations
+      << " playbacks, " << fixed(t.seconds, 1) << " s wall time; stopped: " << t.stop_reason
+      << ". Mean coupling force while recording: " << fixed(t.mean_coupling_force_N, 5) << " N per particle.\n\n"
+      << "| region | RMS % fitted | RMS % tuned | phase deg fitted | phase deg tuned | plot |\n|---|---|---|---|---|---|\n";
+    for (std::size_t r = 0; r < t.regions.size(); ++r) {
+      const scene::Region& region = t.regions[r];
+      if (region.pinned) continue;
+      o << "| " << region.name << " | " << fixed(t.before.regions[r].rms_percent) << " | " << fixed(t.after.regions[r].rms_percent) << " | "
+        << fixed(t.before.regions[r].phase_deg, 1) << " | " << fixed(t.after.regions[r].phase_deg, 1) << " | ![" << region.name << "]("
+        << plot_name(t, region) << ") |\n";
+    }
+    o << "\nTuned parameters:\n\n| parameter | fitted | tuned |\n|---|---|---|\n";
+    for (const Parameter& p : t.parameters) {
+      auto value = [&](const std::vector<scene::Region>& regions) {
+        const scene::Region& reg = regions[p.region];
+        switch (p.kind) {
+          case Parameter::Kind::kAmplitude: return reg.drive.amplitude;
+          case Parameter::Kind::kHarmonicAmplitude: return reg.drive.harmonics[p.harmonic].amplitude;
+          case Parameter::Kind::kHarmonicPhase: return reg.drive.harmonics[p.harmonic].phase_rad;
+          case Parameter::Kind::kDelay: return reg.drive.delay_s;
+          case Parameter::Kind::kLogStiffness: return reg.stiffness_scale;
+        }
+        return 0.0;
+      };
+      const bool stiffness = p.kind == Parameter::Kind::kLogStiffness;
+      o << "| " << p.name << (stiffness ? " (scale)" : "") << " | " << fixed(value(t.fitted), 4) << " | " << fixed(value(t.regions), 4) << " |\n";
+    }
+    o << "\n";
+  }
+  return o.str();
+}
+
+void write_report(const std::filesystem::path& dir, const std::string& scene_path, const std::vector<OrganTuning>& tunings) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw Error(ExitCode::kCannotCreate, "cannot create the report folder " + dir.string() + ": " + ec.message());
+  for (const OrganTuning& t : tunings) {
+    for (std::size_t r = 0; r < t.regions.size(); ++r) {
+      if (t.regions[r].pinned) continue;
+      std::vector<double> time;
+      for (std::size_t k = 0; k < t.target_size[r].size(); ++k) time.push_back(t.measure_start_s + double(k) * t.dt_s);
+      const std::vector<Series> series = {
+          {"target", "#222222", false, t.target_size[r]},
+          {"fitted (untuned)", "#e08a2c", true, t.before.size[r]},
+          {"tuned", "#c0392b", false, t.after.size[r]},
+      };
+      write_text(dir / plot_name(t, t.regions[r]),
+                 svg_line_chart(t.organ + " / " + t.regions[r].name + ": region size", "time [s]", "size relative to rest", time, series));
+    }
+  }
+  write_text(dir / "report.md", report_markdown(scene_path, tunings));
+}
+
+}  // namespace systole::train

@@ -1,0 +1,199 @@
+#include "train/tune.h"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "train/cmaes.h"
+#include "train/coupling.h"
+#include "train/fourier.h"
+
+namespace systole::train {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+/// Maps a search coordinate into [0, 1]: a triangle wave (reflection at the bounds), so
+/// every real is a valid point and the map is continuous - bounds without penalties.
+double reflect(double y) {
+  const double v = y - 2.0 * std::floor(y / 2.0);
+  return v <= 1.0 ? v : 2.0 - v;
+}
+
+double value_of(const Parameter& p, double y) {
+  const double u = y * p.step / (p.hi - p.lo);
+  return p.lo + (p.hi - p.lo) * (p.periodic ? u - std::floor(u) : reflect(u));
+}
+
+double coordinate_of(const Parameter& p, double value) { return (value - p.lo) / p.step; }
+
+double read(const std::vector<scene::Region>& regions, const Parameter& p) {
+  const scene::Drive& d = regions[p.region].drive;
+  switch (p.kind) {
+    case Parameter::Kind::kAmplitude: return d.amplitude;
+    case Parameter::Kind::kHarmonicAmplitude: return d.harmonics[p.harmonic].amplitude;
+    case Parameter::Kind::kHarmonicPhase: return std::remainder(d.harmonics[p.harmonic].phase_rad, 2 * kPi);
+    case Parameter::Kind::kDelay: return d.delay_s;
+    case Parameter::Kind::kLogStiffness: return std::log(regions[p.region].stiffness_scale);
+  }
+  return 0;
+}
+
+void write(std::vector<scene::Region>& regions, const Parameter& p, double v) {
+  scene::Drive& d = regions[p.region].drive;
+  switch (p.kind) {
+    case Parameter::Kind::kAmplitude: d.amplitude = v; break;
+    case Parameter::Kind::kHarmonicAmplitude: d.harmonics[p.harmonic].amplitude = v; break;
+    case Parameter::Kind::kHarmonicPhase: d.harmonics[p.harmonic].phase_rad = v; break;
+    case Parameter::Kind::kDelay: d.delay_s = v; break;
+    case Parameter::Kind::kLogStiffness: regions[p.region].stiffness_scale = std::exp(v); break;
+  }
+}
+
+std::vector<scene::Region> decode(std::vector<scene::Region> regions, const std::vector<Parameter>& params,
+                                  const Eigen::VectorXd& y) {
+  for (std::size_t i = 0; i < params.size(); ++i) write(regions, params[i], value_of(params[i], y[static_cast<Eigen::Index>(i)]));
+  for (auto& r : regions) {
+    if (r.drive.waveform == scene::Waveform::kFourier) limit_harmonics(r.drive);
+  }
+  return regions;
+}
+
+/// The free parameters of the start regions, with their boxes and first steps.
+std::vector<Parameter> free_parameters(const scene::Organ& organ, const std::vector<scene::Region>& start,
+                                       const std::vector<bool>& trained) {
+  std::vector<Parameter> params;
+  const scene::Target& t = organ.target;
+  const double period = 1.0 / t.rate_hz;
+  for (std::size_t r = 0; r < start.size(); ++r) {
+    const scene::Region& region = start[r];
+    if (region.pinned) continue;
+    auto add = [&](std::string what, Parameter::Kind kind, int harmonic, double lo, double hi, bool periodic, double step) {
+      params.push_back({region.name + "." + what, static_cast<int>(r), kind, harmonic, lo, hi, periodic, step});
+    };
+    if (trained[r] && !is_locked(t, region.name, "amplitude"))
+      add("amplitude", Parameter::Kind::kAmplitude, 0, 0.0, 0.95, false, 0.25 * region.drive.amplitude + 0.01);
+    if (trained[r] && !is_locked(t, region.name, "shape")) {
+      for (std::size_t k = 0; k < region.drive.harmonics.size(); ++k) {
+        const std::string h = "harmonic" + std::to_string(k + 1);
+        add(h + ".amplitude", Parameter::Kind::kHarmonicAmplitude, static_cast<int>(k), 0.0, 0.5, false, 0.05);
+        // Harmonic 1's phase is the delay's job.
+        if (k > 0) add(h + ".phase", Parameter::Kind::kHarmonicPhase, static_cast<int>(k), -kPi, kPi, true, 0.3);
+      }
+    }
+    if (trained[r] && !is_locked(t, region.name, "delay"))
+      add("delay", Parameter::Kind::kDelay, 0, 0.0, period, true, 0.05 * period);
+    if (!is_locked(t, region.name, "stiffness")) {
+      const double s0 = region.stiffness_scale;
+      add("stiffness", Parameter::Kind::kLogStiffness, 0, std::log(s0 / 10), std::log(std::min(1e6, 10 * s0)), false, 0.3);
+    }
+  }
+  return params;
+}
+
+std::string format_error(const PlaybackError& e) {
+  std::ostringstream s;
+  s.precision(3);
+  s << "RMS " << e.rms_percent << " %, max " << e.max_percent << " %, volume " << e.volume_percent << " %";
+  return s.str();
+}
+
+}  // namespace
+
+bool is_locked(const scene::Target& target, const std::string& region, const std::string& param) {
+  for (const std::string& entry : target.lock) {
+    if (entry == param || entry == region || entry == region + "." + param) return true;
+  }
+  return false;
+}
+
+OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const TuneSettings& settings) {
+  const auto started = std::chrono::steady_clock::now();
+  const scene::Organ& organ = scene.organs[organ_index];
+  const scene::Target& t = organ.target;
+  auto log = [&](const std::string& line) {
+    if (settings.log) settings.log(organ.name + ": " + line);
+  };
+  const Problem problem = make_problem(scene, organ_index);
+
+  OrganTuning out;
+  out.organ = organ.name;
+  out.target_size = problem.target_size;
+  out.measure_start_s = problem.measure_start_s() + problem.dt_s;
+  out.dt_s = problem.dt_s;
+  out.rate_hz = problem.rate_hz;
+
+  // Which regions' drives are trained: not pinned, and not every drive parameter locked.
+  std::vector<int> fitted_regions;
+  out.drive_trained.assign(organ.regions.size(), false);
+  for (std::size_t r = 0; r < organ.regions.size(); ++r) {
+    const scene::Region& region = organ.regions[r];
+    const bool all_locked = is_locked(t, region.name, "amplitude") && is_locked(t, region.name, "shape") &&
+                            is_locked(t, region.name, "delay");
+    if (region.pinned || all_locked) continue;
+    out.drive_trained[r] = true;
+    fitted_regions.push_back(static_cast<int>(r));
+  }
+
+  out.written = play(problem, problem.model);
+  log("as written: " + format_error(out.written));
+
+  // Signals from forces, fitted as Fourier series.
+  const RecordedSignals recorded = record_coupled(problem, problem.model, t.coupling_N_per_m, fitted_regions);
+  out.mean_coupling_force_N = recorded.mean_coupling_force_N;
+  std::vector<scene::Region> start = organ.regions;
+  for (std::size_t r = 0; r < start.size(); ++r) {
+    scene::Drive& d = start[r].drive;
+    if (!out.drive_trained[r]) {
+      if (d.waveform != scene::Waveform::kNone && !start[r].pinned) d.rate_hz = t.rate_hz, d.rate_end_hz = 0;
+      continue;
+    }
+    const scene::Drive fit = drive_from_series(fit_fourier(recorded.times_s, recorded.contraction[r], t.rate_hz, t.harmonics));
+    const scene::Drive written = d;
+    if (!is_locked(t, start[r].name, "shape")) {
+      d = scene::Drive{};
+      d.waveform = scene::Waveform::kFourier;
+      d.harmonics = fit.harmonics;
+    }
+    d.rate_hz = t.rate_hz;
+    d.rate_end_hz = 0;
+    d.amplitude = is_locked(t, start[r].name, "amplitude") ? written.amplitude : fit.amplitude;
+    d.delay_s = is_locked(t, start[r].name, "delay") ? written.delay_s : fit.delay_s;
+    if (d.waveform == scene::Waveform::kFourier && d.harmonics.empty()) d.harmonics = fit.harmonics;
+  }
+  out.fitted = start;
+  out.before = play(problem, with_regions(problem.model, start));
+  log("fitted (untuned): " + format_error(out.before) + "; mean coupling force " + std::to_string(recorded.mean_coupling_force_N) + " N");
+
+  out.parameters = free_parameters(organ, start, out.drive_trained);
+  Eigen::VectorXd y0(static_cast<Eigen::Index>(out.parameters.size()));
+  for (std::size_t i = 0; i < out.parameters.size(); ++i) y0[static_cast<Eigen::Index>(i)] = coordinate_of(out.parameters[i], read(start, out.parameters[i]));
+
+  auto objective = [&](const Eigen::VectorXd& y) {
+    const PlaybackError e = play(problem, with_regions(problem.model, decode(start, out.parameters, y)));
+    return e.diverged ? 1e6 : e.rms_percent;
+  };
+  CmaesSettings cma;
+  cma.sigma = 1.0;  // Coordinates are in units of each parameter's first step.
+  cma.max_evaluations = settings.budget >= 0 ? settings.budget : t.budget;
+  cma.seed = settings.seed;
+  cma.threads = settings.threads;
+  const CmaesResult best = minimize_cmaes(objective, y0, cma, [&](const CmaesGeneration& g) {
+    std::ostringstream s;
+    s.precision(4);
+    s << "generation " << g.generation << ", " << g.evaluations << " playbacks: best RMS " << g.best << " %";
+    log(s.str());
+  });
+  out.regions = decode(start, out.parameters, best.best_x);
+  out.after = play(problem, with_regions(problem.model, out.regions));
+  out.generations = best.generations;
+  out.evaluations = best.evaluations + 3;  // With the written, fitted and final playbacks.
+  out.stop_reason = best.stop_reason;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  log("tuned: " + format_error(out.after) + " (" + best.stop_reason + ")");
+  return out;
+}
+
+}  // namespace systole::train
