@@ -140,7 +140,11 @@ void Mp4Writer::Impl::open_encoder(const AVCodec* codec) {
   encoder->framerate = AVRational{rate.num, rate.den};
   encoder->time_base = AVRational{rate.den, rate.num};  // One tick per frame: pts = frame number.
   encoder->sample_aspect_ratio = AVRational{1, 1};
-  encoder->profile = FF_PROFILE_H264_HIGH;
+  // CRF 0 is lossless, which x264 encodes only in the High 4:4:4 Predictive profile (4:2:0
+  // samples still): the joined segments of a bake then decode to exactly the single run's
+  // frames. Every other CRF uses High, which every player decodes.
+  const bool lossless = settings.crf == 0;
+  encoder->profile = lossless ? FF_PROFILE_H264_HIGH_444_PREDICTIVE : FF_PROFILE_H264_HIGH;
   // Limited ("tv") range with BT.709 everywhere, matching the swscale conversion below.
   encoder->color_range = AVCOL_RANGE_MPEG;
   encoder->color_primaries = AVCOL_PRI_BT709;
@@ -151,7 +155,7 @@ void Mp4Writer::Impl::open_encoder(const AVCodec* codec) {
 
   AVDictionary* options = nullptr;
   av_dict_set(&options, "preset", settings.preset.c_str(), 0);
-  av_dict_set(&options, "profile", "high", 0);
+  av_dict_set(&options, "profile", lossless ? "high444" : "high", 0);
   av_dict_set_int(&options, "crf", settings.crf, 0);
   const int err = avcodec_open2(encoder, codec, &options);
   av_dict_free(&options);

@@ -737,7 +737,7 @@ ValueSpec<Output> output_spec() {
       field("duration", quantity(Dimension::kTime, open_closed(0, 3600)), &Output::duration_s, "Length of the clip."),
       field("quality", choice<Quality>({{"draft", Quality::kDraft}, {"standard", Quality::kStandard}, {"archival", Quality::kArchival}}),
             &Output::quality, "Encoder settings by purpose: draft (x264 ultrafast, CRF 23), standard (veryfast, CRF 20), archival (slow, CRF 16). crf and preset override them."),
-      field("crf", whole<int>(0, 51), &Output::crf, "x264 constant rate factor: 0 lossless, 51 worst.").shown_default("by quality"),
+      field("crf", whole<int>(0, 51), &Output::crf, "x264 constant rate factor: 0 lossless (High 4:4:4 Predictive profile, which some browsers do not play), 51 worst.").shown_default("by quality"),
       field("preset", choice<std::string>({{"ultrafast", "ultrafast"}, {"superfast", "superfast"}, {"veryfast", "veryfast"},
                                            {"faster", "faster"}, {"fast", "fast"}, {"medium", "medium"}, {"slow", "slow"},
                                            {"slower", "slower"}, {"veryslow", "veryslow"}, {"placebo", "placebo"}}),
