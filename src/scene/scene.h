@@ -162,7 +162,9 @@ struct Target {
   bool enabled = false;
   double rate_hz = 0;                  ///< Cycles per second the target (and the tuned drives) run at. unit: Hz
   std::vector<TargetFrame> frames;     ///< A key-frame mesh sequence over one period...
-  std::vector<TargetCurve> curves;     ///< ...or per-region size curves.
+  std::vector<TargetCurve> curves;     ///< ...or per-region size curves...
+  std::string animation;               ///< ...or an animated mesh file (morph targets, skinning); resolved by load().
+  int animation_samples = 32;          ///< Poses sampled from the animation over one period.
   double coupling_N_per_m = 5000;      ///< Stiffness tying each particle to its target while recording. unit: N/m
   int harmonics = 3;                   ///< Fourier harmonics of a fitted drive.
   std::vector<std::string> lock;       ///< Parameters kept as written: `param`, `region` or `region.param`.

@@ -554,6 +554,9 @@ ValueSpec<Target> target_spec() {
       field("rate", quantity(Dimension::kFrequency, open_closed(0, 20)), &Target::rate_hz, "Cycles per unit time of the target; the tuned drives run at it.").required(),
       field("frames", list(frame, 2, 4096, "list of key frames"), &Target::frames, "Key-frame meshes at times within one period, interpolated smoothly and periodically."),
       field("curves", list(curve, 1, 256, "list of curves"), &Target::curves, "Per-region size curves over one period (instead of frames)."),
+      field("animation", path_text(), &Target::animation,
+            "An animated mesh file (glTF/GLB, FBX, Collada...) of the organ's own mesh: its first animation (morph targets and/or skinning) is one period."),
+      field("samples", whole<int>(4, 1024), &Target::animation_samples, "Poses sampled evenly from the animation over one period."),
       field("coupling", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Target::coupling_N_per_m, "Stiffness tying each particle to its target while the driving forces are recorded."),
       field("harmonics", whole<int>(1, 16), &Target::harmonics, "Fourier harmonics of each fitted drive."),
       field("lock", list(path_text(), 0, 1024, "list of names"), &Target::lock,
@@ -561,11 +564,19 @@ ValueSpec<Target> target_spec() {
       field("budget", whole<int>(0, 1000000), &Target::budget, "Playbacks the tuner may run (0: fit only)."),
       field("settle", number(closed(0, 100)), &Target::settle_cycles, "Cycles run before the error is measured."),
       field("measure", number(open_closed(0, 100)), &Target::measure_cycles, "Cycles over which the error is measured."),
-  }, [](const Node& node, Target& t, const std::string& path, const Context&) {
+  }, [](const Node& node, Target& t, const std::string& path, const Context& ctx) {
     t.enabled = true;
     t.origin = node.origin;
-    if (t.frames.empty() == t.curves.empty())
-      fail(node.origin, path, "expected exactly one of frames, curves");
+    if (int(!t.frames.empty()) + int(!t.curves.empty()) + int(!t.animation.empty()) != 1)
+      fail(node.origin, path, "expected exactly one of frames, curves, animation");
+    if (node.find("samples") != nullptr && t.animation.empty()) fail(origin_of(node, "samples"), join(path, "samples"), "applies to an animation only");
+    if (!t.animation.empty()) {
+      const std::filesystem::path file = std::filesystem::path(t.animation).is_absolute() ? std::filesystem::path(t.animation) : ctx.base_dir / t.animation;
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(file, ec))
+        throw Error(ExitCode::kNoInput, where(origin_of(node, "animation")) + join(path, "animation") + ": animation file not found: " + file.lexically_normal().string());
+      t.animation = file.lexically_normal().string();
+    }
     const double period_s = 1.0 / t.rate_hz;
     for (std::size_t i = 0; i < t.frames.size(); ++i) {
       const Origin& at = node.find("frames")->items[i].origin;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "mesh/animation.h"
 #include "mesh/import.h"
 #include "mesh/procedural.h"
 
@@ -54,11 +55,15 @@ Eigen::Matrix3d linear_part(const scene::Organ& organ) {
   return rotation * (t.scale * organ.mesh.unit_m);
 }
 
+/// The organ's mesh as its file or generator gives it, before centring and transform.
+std::vector<Eigen::Vector3d> undeformed_vertices(const scene::Organ& organ) {
+  return organ.mesh.file.empty() ? mesh::generate_organ(organ.mesh.procedural, organ.mesh.detail).surface.positions
+                                 : mesh::import_mesh(organ.mesh.file).surface.positions;
+}
+
 TargetMotion from_frames(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
   const Eigen::Matrix3Xd rest = to_matrix(geometry.mesh.surface.positions);
-  const Eigen::Matrix3Xd undeformed = to_matrix(organ.mesh.file.empty()
-                                                    ? mesh::generate_organ(organ.mesh.procedural, organ.mesh.detail).surface.positions
-                                                    : mesh::import_mesh(organ.mesh.file).surface.positions);
+  const Eigen::Matrix3Xd undeformed = to_matrix(undeformed_vertices(organ));
   const Eigen::Matrix3d linear = linear_part(organ);
   std::vector<double> phases;
   std::vector<Eigen::Matrix3Xd> poses;
@@ -73,6 +78,20 @@ TargetMotion from_frames(const scene::Organ& organ, const mesh::OrganGeometry& g
     phases.push_back(f.time_s * organ.target.rate_hz);
   }
   return TargetMotion(std::move(phases), std::move(poses));
+}
+
+TargetMotion from_animation(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
+  const Eigen::Matrix3Xd rest = to_matrix(geometry.mesh.surface.positions);
+  const std::vector<Eigen::Vector3d> undeformed = undeformed_vertices(organ);
+  if (undeformed.size() != static_cast<std::size_t>(rest.cols())) {
+    throw Error(ExitCode::kInternal, "organ '" + organ.name + "': its mesh changed size between reads");
+  }
+  mesh::AnimationPoses animation = mesh::import_animation(organ.target.animation, undeformed, organ.target.animation_samples);
+  const Eigen::Matrix3Xd from = to_matrix(undeformed);
+  const Eigen::Matrix3d linear = linear_part(organ);
+  std::vector<Eigen::Matrix3Xd> poses;
+  for (const auto& pose : animation.poses) poses.push_back(rest + linear * (to_matrix(pose) - from));
+  return TargetMotion(std::move(animation.phases), std::move(poses));
 }
 
 TargetMotion from_curves(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
@@ -113,6 +132,7 @@ TargetMotion from_curves(const scene::Organ& organ, const mesh::OrganGeometry& g
 
 TargetMotion load_target(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
   if (!organ.target.enabled) throw Error(ExitCode::kDataError, "organ '" + organ.name + "' has no target");
+  if (!organ.target.animation.empty()) return from_animation(organ, geometry);
   return organ.target.frames.empty() ? from_curves(organ, geometry) : from_frames(organ, geometry);
 }
 

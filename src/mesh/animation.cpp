@@ -1,0 +1,235 @@
+#include "mesh/animation.h"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <map>
+#include <string>
+#include <tuple>
+
+#include "common/error.h"
+
+namespace systole::mesh {
+namespace {
+
+Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
+  Eigen::Matrix4d out;
+  for (unsigned r = 0; r < 4; ++r) {
+    for (unsigned c = 0; c < 4; ++c) out(r, c) = m[r][c];
+  }
+  return out;
+}
+
+Eigen::Vector3d apply(const Eigen::Matrix4d& m, const Eigen::Vector3d& p) {
+  return m.topLeftCorner<3, 3>() * p + m.topRightCorner<3, 1>();
+}
+
+/// The key pair around `t` (ticks) and the fraction between them; clamped at both ends.
+template <typename Key>
+std::tuple<const Key*, const Key*, double> bracket(const Key* keys, unsigned count, double t) {
+  if (count == 1 || t <= keys[0].mTime) return {&keys[0], &keys[0], 0.0};
+  if (t >= keys[count - 1].mTime) return {&keys[count - 1], &keys[count - 1], 0.0};
+  unsigned i = 0;
+  while (i + 2 < count && keys[i + 1].mTime <= t) ++i;
+  const double span = keys[i + 1].mTime - keys[i].mTime;
+  return {&keys[i], &keys[i + 1], span > 0 ? (t - keys[i].mTime) / span : 0.0};
+}
+
+Eigen::Vector3d lerp(const aiVectorKey* keys, unsigned count, double t, const Eigen::Vector3d& fallback) {
+  if (count == 0) return fallback;
+  const auto [a, b, f] = bracket(keys, count, t);
+  const Eigen::Vector3d va(a->mValue.x, a->mValue.y, a->mValue.z), vb(b->mValue.x, b->mValue.y, b->mValue.z);
+  return (1 - f) * va + f * vb;
+}
+
+/// A node's local transform at t: its channel's keys where it has one, else as written.
+Eigen::Matrix4d local_transform(const aiNode* node, const aiNodeAnim* channel, double t) {
+  if (channel == nullptr) return to_eigen(node->mTransformation);
+  aiVector3D scaling, position;
+  aiQuaternion rotation;
+  node->mTransformation.Decompose(scaling, rotation, position);
+  const Eigen::Vector3d p = lerp(channel->mPositionKeys, channel->mNumPositionKeys, t, {position.x, position.y, position.z});
+  const Eigen::Vector3d s = lerp(channel->mScalingKeys, channel->mNumScalingKeys, t, {scaling.x, scaling.y, scaling.z});
+  Eigen::Quaterniond q(rotation.w, rotation.x, rotation.y, rotation.z);
+  if (channel->mNumRotationKeys > 0) {
+    const auto [a, b, f] = bracket(channel->mRotationKeys, channel->mNumRotationKeys, t);
+    const Eigen::Quaterniond qa(a->mValue.w, a->mValue.x, a->mValue.y, a->mValue.z);
+    const Eigen::Quaterniond qb(b->mValue.w, b->mValue.x, b->mValue.y, b->mValue.z);
+    q = qa.slerp(f, qb);
+  }
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.topLeftCorner<3, 3>() = q.normalized().toRotationMatrix() * s.asDiagonal();
+  m.topRightCorner<3, 1>() = p;
+  return m;
+}
+
+/// Every node's global transform at t (`animation` null: the rest pose as written).
+void global_transforms(const aiNode* node, const Eigen::Matrix4d& parent, const aiAnimation* animation, double t,
+                       std::map<const aiNode*, Eigen::Matrix4d>& out) {
+  const aiNodeAnim* channel = nullptr;
+  for (unsigned c = 0; animation != nullptr && c < animation->mNumChannels; ++c) {
+    if (animation->mChannels[c]->mNodeName == node->mName) channel = animation->mChannels[c];
+  }
+  const Eigen::Matrix4d global = parent * local_transform(node, channel, t);
+  out[node] = global;
+  for (unsigned i = 0; i < node->mNumChildren; ++i) global_transforms(node->mChildren[i], global, animation, t, out);
+}
+
+/// The node that holds mesh `m` (the first, depth first), or null.
+const aiNode* node_of_mesh(const aiNode* node, unsigned m) {
+  for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+    if (node->mMeshes[i] == m) return node;
+  }
+  for (unsigned i = 0; i < node->mNumChildren; ++i) {
+    if (const aiNode* found = node_of_mesh(node->mChildren[i], m)) return found;
+  }
+  return nullptr;
+}
+
+/// The morph weights of mesh `m` at t, one per anim mesh (zero without a channel).
+std::vector<double> morph_weights(const aiScene* scene, const aiAnimation* animation, unsigned m, const aiNode* node, double t) {
+  const aiMesh* mesh = scene->mMeshes[m];
+  std::vector<double> weights(mesh->mNumAnimMeshes, 0.0);
+  for (unsigned c = 0; c < animation->mNumMorphMeshChannels; ++c) {
+    const aiMeshMorphAnim* channel = animation->mMorphMeshChannels[c];
+    const bool ours = channel->mName == mesh->mName || (node != nullptr && channel->mName == node->mName);
+    if (!ours || channel->mNumKeys == 0) continue;
+    const auto [a, b, f] = bracket(channel->mKeys, channel->mNumKeys, t);
+    for (const auto& [key, share] : {std::pair{a, 1 - f}, std::pair{b, f}}) {
+      for (unsigned k = 0; k < key->mNumValuesAndWeights; ++k) {
+        if (key->mValues[k] < weights.size()) weights[key->mValues[k]] += share * key->mWeights[k];
+      }
+    }
+  }
+  return weights;
+}
+
+/// Every vertex of every mesh, in file order, posed at t (`animation` null: at rest).
+std::vector<Eigen::Vector3d> pose(const aiScene* scene, const aiAnimation* animation, double t) {
+  std::map<const aiNode*, Eigen::Matrix4d> globals;
+  global_transforms(scene->mRootNode, Eigen::Matrix4d::Identity(), animation, t, globals);
+  std::vector<Eigen::Vector3d> out;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[m];
+    const aiNode* node = node_of_mesh(scene->mRootNode, m);
+    const Eigen::Matrix4d placement = node != nullptr ? globals.at(node) : Eigen::Matrix4d::Identity();
+    // Morph targets, in the mesh's own space.
+    std::vector<Eigen::Vector3d> local(mesh->mNumVertices);
+    for (unsigned v = 0; v < mesh->mNumVertices; ++v) local[v] = {mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z};
+    if (animation != nullptr && mesh->mNumAnimMeshes > 0) {
+      const std::vector<double> weights = morph_weights(scene, animation, m, node, t);
+      for (unsigned k = 0; k < mesh->mNumAnimMeshes; ++k) {
+        const aiAnimMesh* target = mesh->mAnimMeshes[k];
+        if (weights[k] == 0 || target->mVertices == nullptr || target->mNumVertices != mesh->mNumVertices) continue;
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+          const aiVector3D& p = target->mVertices[v];
+          local[v] += weights[k] * (Eigen::Vector3d(p.x, p.y, p.z) - Eigen::Vector3d(mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z));
+        }
+      }
+    }
+    // Skinning (posed only: at rest the mesh sits where its node puts it, as import_mesh reads it).
+    if (animation != nullptr && mesh->HasBones()) {
+      std::vector<Eigen::Vector3d> skinned(mesh->mNumVertices, Eigen::Vector3d::Zero());
+      std::vector<double> total(mesh->mNumVertices, 0.0);
+      for (unsigned b = 0; b < mesh->mNumBones; ++b) {
+        const aiBone* bone = mesh->mBones[b];
+        const aiNode* bone_node = scene->mRootNode->FindNode(bone->mName);
+        if (bone_node == nullptr) continue;
+        const Eigen::Matrix4d skin = globals.at(bone_node) * to_eigen(bone->mOffsetMatrix);
+        for (unsigned w = 0; w < bone->mNumWeights; ++w) {
+          const aiVertexWeight& vw = bone->mWeights[w];
+          if (vw.mVertexId >= mesh->mNumVertices) continue;
+          skinned[vw.mVertexId] += vw.mWeight * apply(skin, local[vw.mVertexId]);
+          total[vw.mVertexId] += vw.mWeight;
+        }
+      }
+      for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+        out.push_back(total[v] > 0 ? Eigen::Vector3d(skinned[v] / total[v]) : apply(placement, local[v]));
+      }
+    } else {
+      for (unsigned v = 0; v < mesh->mNumVertices; ++v) out.push_back(apply(placement, local[v]));
+    }
+  }
+  return out;
+}
+
+/// For each wanted vertex, the index of the file vertex at the same place (nearest within
+/// `tolerance`, the lowest index among equals), found through a hash grid of cell `tolerance`.
+std::vector<std::size_t> match_vertices(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& file_vertices,
+                                        const std::vector<Eigen::Vector3d>& wanted, double tolerance) {
+  auto cell = [&](const Eigen::Vector3d& p) {
+    return std::array<long long, 3>{static_cast<long long>(std::floor(p.x() / tolerance)),
+                                    static_cast<long long>(std::floor(p.y() / tolerance)),
+                                    static_cast<long long>(std::floor(p.z() / tolerance))};
+  };
+  std::map<std::array<long long, 3>, std::vector<std::size_t>> grid;
+  for (std::size_t i = 0; i < file_vertices.size(); ++i) grid[cell(file_vertices[i])].push_back(i);
+  std::vector<std::size_t> match(wanted.size());
+  for (std::size_t w = 0; w < wanted.size(); ++w) {
+    const auto c = cell(wanted[w]);
+    double best = tolerance;
+    std::size_t found = file_vertices.size();
+    for (long long dx = -1; dx <= 1; ++dx) {
+      for (long long dy = -1; dy <= 1; ++dy) {
+        for (long long dz = -1; dz <= 1; ++dz) {
+          const auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == grid.end()) continue;
+          for (std::size_t i : it->second) {
+            const double d = (file_vertices[i] - wanted[w]).norm();
+            if (d < best || (d == best && i < found)) best = d, found = i;
+          }
+        }
+      }
+    }
+    if (found == file_vertices.size()) {
+      throw Error(ExitCode::kDataError, file.string() + ": the organ's vertex " + std::to_string(w) +
+                                            " has no counterpart in the animation's rest pose (the animation must be of the organ's own mesh)");
+    }
+    match[w] = found;
+  }
+  return match;
+}
+
+}  // namespace
+
+AnimationPoses import_animation(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& rest_vertices,
+                                int samples) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) throw Error(ExitCode::kNoInput, file.string() + ": animation file not found");
+  Assimp::Importer importer;
+  // No post-processing that moves or merges vertices: the file's own vertices, matched below.
+  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure);
+  if (scene == nullptr) {
+    throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (assimp: " + importer.GetErrorString() + ")");
+  }
+  if (scene->mNumAnimations == 0) throw Error(ExitCode::kDataError, file.string() + ": the file holds no animation");
+  const aiAnimation* animation = scene->mAnimations[0];
+  const double ticks_per_s = animation->mTicksPerSecond > 0 ? animation->mTicksPerSecond : 1.0;
+  if (!(animation->mDuration > 0)) throw Error(ExitCode::kDataError, file.string() + ": the animation has no duration");
+
+  const std::vector<Eigen::Vector3d> rest = pose(scene, nullptr, 0);
+  Eigen::AlignedBox3d box;
+  for (const auto& p : rest) box.extend(p);
+  const double tolerance = std::max(1e-5 * box.diagonal().norm(), 1e-12);
+  const std::vector<std::size_t> match = match_vertices(file, rest, rest_vertices, tolerance);
+
+  AnimationPoses out;
+  out.duration_s = animation->mDuration / ticks_per_s;
+  for (int i = 0; i < samples; ++i) {
+    const double phase = double(i) / double(samples);
+    const std::vector<Eigen::Vector3d> posed = pose(scene, animation, phase * animation->mDuration);
+    std::vector<Eigen::Vector3d> vertices(rest_vertices.size());
+    // The organ's vertex moves by its file counterpart's displacement.
+    for (std::size_t w = 0; w < rest_vertices.size(); ++w) vertices[w] = rest_vertices[w] + (posed[match[w]] - rest[match[w]]);
+    out.phases.push_back(phase);
+    out.poses.push_back(std::move(vertices));
+  }
+  return out;
+}
+
+}  // namespace systole::mesh
