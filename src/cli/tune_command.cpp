@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -33,6 +34,10 @@ Command add_tune_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   return {cmd, [o, seed] {
             const scene::Scene scene = scene::load(o->scene);
+            // Claimed before the minutes of tuning, so a folder that is missing or read-only
+            // stops the run at once rather than losing its result.
+            AtomicOutput out(o->output);
+            if (!o->report.empty()) std::filesystem::create_directories(o->report);
             train::TuneSettings settings;
             settings.budget = o->budget;
             settings.seed = seed->count() > 0 ? o->seed : scene.seed;
@@ -45,7 +50,6 @@ Command add_tune_command(CLI::App& app) {
             if (tunings.empty()) {
               throw Error(ExitCode::kDataError, o->scene + ": no organ has a target to tune to (add organs[].target: docs/training.md)");
             }
-            AtomicOutput out(o->output);
             {
               std::ofstream file(out.temp_path(), std::ios::binary);
               file << train::tuned_scene_yaml(scene, tunings, o->output);

@@ -8,7 +8,10 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <numbers>
+#include <sys/wait.h>
 
 #include "scene/load.h"
 #include "train/train_test_util.h"
@@ -80,6 +83,19 @@ TEST(KeyFrames, SameSeedGivesTheSameTunedSceneWhichRenders) {
   EXPECT_EQ(std::system((bin + " validate " + tuned + " > /dev/null").c_str()), 0);
   EXPECT_EQ(std::system((bin + " render " + tuned + " --frames 0,15 --png " + (dir / "png").string() + " > /dev/null 2>&1").c_str()), 0);
   EXPECT_TRUE(std::filesystem::exists(dir / "png" / "frame_00015.png"));
+}
+
+TEST(KeyFrames, AMissingOutputFolderStopsTheRunBeforeAnyTuning) {
+  const auto dir = write_squash_problem("squash_no_folder", 200);
+  const std::string log = (dir / "log.txt").string();
+  const int status = std::system((std::string(SYSTOLE_BINARY) + " tune " + (dir / "squash.yaml").string() + " -o " +
+                                  (dir / "missing" / "tuned.yaml").string() + " > " + log + " 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 73);
+  std::ifstream in(log);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("does not exist"), std::string::npos) << text;
+  EXPECT_EQ(text.find("generation"), std::string::npos) << "tuned before checking where the result goes:\n" << text;
 }
 
 }  // namespace
