@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "common/error.h"
+#include "mesh/import.h"
 
 namespace systole::mesh {
 namespace {
@@ -199,8 +200,7 @@ std::vector<std::size_t> match_vertices(const std::filesystem::path& file, const
 
 AnimationPoses import_animation(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& rest_vertices,
                                 int samples) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) throw Error(ExitCode::kNoInput, file.string() + ": animation file not found");
+  check_mesh_file(file);
   Assimp::Importer importer;
   // No post-processing that moves or merges vertices: the file's own vertices, matched below.
   const aiScene* scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure);

@@ -13,4 +13,9 @@ namespace systole::mesh {
 /// Error(kDataError) naming the file when assimp cannot parse it or it has no triangles.
 OrganMesh import_mesh(const std::filesystem::path& file);
 
+/// What import_mesh checks before assimp reads the file: that it is a readable regular file,
+/// and that PLY and binary glTF headers do not promise more than the file holds (assimp 5.2
+/// hangs or allocates the claim). Throws Error(kNoInput) or Error(kDataError) naming the file.
+void check_mesh_file(const std::filesystem::path& file);
+
 }  // namespace systole::mesh

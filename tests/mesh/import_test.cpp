@@ -164,6 +164,32 @@ TEST(Import, PlyHeaderClaimingMoreThanTheFileHoldsIsDataError) {
   }
 }
 
+TEST(Import, BinaryGltfHeaderClaimingMoreThanTheFileHoldsIsDataError) {
+  // fuzz_mesh's finding: a 1.7 GB length in a 600-byte GLB made assimp allocate it.
+  const auto file = testing::scratch("huge_claim.glb");
+  std::string glb = std::string("glTF") + std::string("\x02\0\0\0", 4) + std::string("\x3c\x62\x6c\x65", 4) +
+                    std::string("\x08\0\0\0", 4) + "JSON" + "{}      ";
+  testing::write_text(file, glb);
+  try {
+    import_mesh(file);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kDataError);
+    EXPECT_NE(std::string(e.what()).find("binary glTF header gives a length of 1701601852 bytes; the file has 28"),
+              std::string::npos) << e.what();
+  }
+  // With the true length the header passes, and assimp's own error names the file.
+  glb.replace(8, 4, std::string("\x1c\0\0\0", 4));
+  testing::write_text(file, glb);
+  try {
+    import_mesh(file);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kDataError);
+    EXPECT_EQ(std::string(e.what()).find("header gives a length"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Import, DeviceOrPipeIsNotAMeshFile) {
   // /dev/zero never ends: only regular files are read.
   try {
