@@ -34,7 +34,7 @@ std::vector<std::string> h264_encoders() {
   while (const AVCodec* codec = av_codec_iterate(&opaque)) {
     if (codec->id == AV_CODEC_ID_H264 && av_codec_is_encoder(codec)) names.emplace_back(codec->name);
   }
-  // libx264 first (it is what Mp4Writer uses), the others in libavcodec's order.
+  // libx264 first (it is what VideoWriter uses), the others in libavcodec's order.
   std::stable_partition(names.begin(), names.end(), [](const std::string& n) { return n == "libx264"; });
   return names;
 }
