@@ -196,5 +196,28 @@ TEST(OutputFormat, TheExtensionOfDashOChoosesTheFormat) {
   }
 }
 
+TEST(OutputFormat, TheDefaultPathTakesTheFormatsExtension) {
+  const auto s = scene::load_from_string(heart("duration: 0.2 s, format: webm"), "teaching.yaml", {});
+  EXPECT_EQ(app::default_video_path(s), fs::path("out/teaching.webm"));
+  EXPECT_EQ(app::video_format(s, "elsewhere/clip.gif"), encode::VideoFormat::kGif) << "the extension wins";
+  EXPECT_EQ(app::video_format(s, "elsewhere/clip.video"), encode::VideoFormat::kWebm) << "else the scene's format";
+}
+
+TEST(OutputFormat, EveryFormatIsTheSameBytesOnEveryRun) {
+  const fs::path dir = scratch("format_determinism");
+  const std::string yaml = heart("duration: 0.3 s, loop: false, slow_motion: 2",
+                                 "captions:\n  - {text: \"Same bits\", from: 0.1 s, to: 0.5 s, fade: 0.1 s}\n");
+  for (const char* ext : {"mkv", "webm", "gif", "mp4"}) {
+    std::string bytes[2];
+    for (int run = 0; run < 2; ++run) {
+      const fs::path video = dir / (std::to_string(run) + "." + ext);
+      render_frames(yaml, dir / ("png" + std::to_string(run) + ext), {}, video);
+      bytes[run] = read_file(video);
+    }
+    EXPECT_FALSE(bytes[0].empty()) << ext;
+    EXPECT_TRUE(bytes[0] == bytes[1]) << ext << " differs between two renders of the same scene";
+  }
+}
+
 }  // namespace
 }  // namespace systole::test

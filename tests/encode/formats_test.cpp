@@ -134,6 +134,20 @@ TEST(Formats, GifRoundTripsThroughOnePaletteWithExactTiming) {
   EXPECT_NEAR(std::stod(test::json_value(probe, "duration", "format")), 0.48, 0.011);
 }
 
+TEST(Formats, GifDelaysAddUpAtRatesThatAreNotWholeCentiseconds) {
+  const fs::path file = scratch_dir() / "thirty.gif";
+  auto sink = open_video(file, [] {
+    VideoSettings s = settings_for(VideoFormat::kGif);
+    s.fps = 30;  // Delays of 3, 3, 4 cs: 30 frames last exactly 1 s.
+    return s;
+  }());
+  for (int i = 0; i < 30; ++i) sink->write(test::organ_frame(kWidth, kHeight, i), i);
+  sink->finish();
+  const std::string probe = test::ffprobe_json(file);
+  EXPECT_EQ(test::json_value(probe, "nb_read_frames"), "30");
+  EXPECT_NEAR(std::stod(test::json_value(probe, "duration", "format")), 1.0, 0.011);
+}
+
 TEST(Formats, SameFramesGiveTheSameBytes) {
   const auto frames = clip();
   const fs::path dir = scratch_dir();
