@@ -220,6 +220,7 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
       cards.draw_card(k, card);
       video->write(card, k);
     }
+    times.card_frames = video_offset;
     times.encode_s += seconds_since(t0);
   }
   run_frame_pipeline(static_cast<int>(frames.size()), kPipelineDepth, request.overlap, stages);
@@ -235,13 +236,15 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
 
 std::string describe(const StageTimes& t) {
   const double n = t.frames > 0 ? t.frames : 1;
-  char text[512];
+  char text[640];
   std::snprintf(text, sizeof text,
                 "%d frames in %.2f s: simulate %.2f ms/frame, render %.2f ms/frame, read back %.2f ms/frame, "
                 "anti-alias %.2f ms/frame, encode %.2f ms/frame (stages overlapped)",
                 t.frames, t.wall_s, 1e3 * t.simulate_s / n, 1e3 * t.render_s / n, 1e3 * t.readback_s / n,
                 1e3 * t.antialias_s / n, 1e3 * t.encode_s / n);
-  return text;
+  std::string line = text;
+  if (t.card_frames > 0) line += "; encode includes " + std::to_string(t.card_frames) + " title-card frames";
+  return line;
 }
 
 }  // namespace systole::app

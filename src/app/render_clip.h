@@ -37,6 +37,7 @@ struct RenderRequest {
 /// each is the busy time of its own thread (inflated when the stages contend for cores).
 struct StageTimes {
   int frames = 0;          ///< Frames rendered.
+  int card_frames = 0;     ///< Title-card frames written before them (their drawing counts as encode_s).
   double simulate_s = 0;   ///< unit: s
   double render_s = 0;     ///< unit: s
   double readback_s = 0;   ///< unit: s

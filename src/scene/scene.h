@@ -212,7 +212,6 @@ struct Output {
   bool loop = false;
   int settle_cycles = 2;   ///< loop: cycles (of the slowest drive) simulated before the clip starts, at least. unit: 1
   // Resolved on loading (scene::load), not keys:
-  double loop_period_s = 0;  ///< loop: the loop's length, whole cycles of every drive (= duration_s). unit: s
   int start_frame = 0;       ///< loop: frames simulated before the clip's frame 0 (whole loops). unit: frames
   Quality quality = Quality::kStandard;
   int crf = 20;            ///< x264 constant rate factor, 0 (lossless) to 51; default: the quality's.

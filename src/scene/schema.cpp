@@ -797,9 +797,13 @@ void resolve_loop(const Node& node, Scene& s) {
     const std::string at = "organs[" + std::to_string(i) + "]";
     if (organ.body.volume_drive.waveform != Waveform::kNone)
       rhythms.push_back({&organ.body.volume_drive, at + ".body.volume_drive", organ.origin});
-    for (std::size_t r = 0; r < organ.regions.size(); ++r)
-      if (organ.regions[r].drive.waveform != Waveform::kNone && !organ.regions[r].pinned)
-        rhythms.push_back({&organ.regions[r].drive, at + ".regions[" + std::to_string(r) + "].drive", organ.regions[r].origin});
+    for (std::size_t r = 0; r < organ.regions.size(); ++r) {
+      const Region& region = organ.regions[r];
+      const std::string region_at = at + ".regions[" + std::to_string(r) + "]";
+      if (!region.motion.empty())
+        fail(region.origin, region_at + ".motion", "a prescribed motion is held after its last key, so output.loop cannot repeat it; drop the loop or the motion");
+      if (region.drive.waveform != Waveform::kNone && !region.pinned) rhythms.push_back({&region.drive, region_at + ".drive", region.origin});
+    }
   }
   for (std::size_t i = 0; i < s.interactions.size(); ++i) {
     const Interaction& in = s.interactions[i];
@@ -835,7 +839,6 @@ void resolve_loop(const Node& node, Scene& s) {
   const double common = cycles * period;
   const int repeats = std::max(1, static_cast<int>(std::lround(o.duration_s / common)));
   o.duration_s = repeats * common;
-  o.loop_period_s = o.duration_s;
   if (o.frame_count() < 2)
     fail(where, "output.loop", "the loop (" + format_number(o.duration_s) + " s) is shorter than two frames; raise output.fps");
   const int loops_to_settle = static_cast<int>(std::ceil(o.settle_cycles * period / o.duration_s - 1e-9));

@@ -66,6 +66,11 @@ TEST(SceneTiming, LoopNeedsSteadyRhythms) {
   EXPECT_NE(f.message.find("organs[0].regions[1].drive.irregularity: an irregular rhythm never repeats"), std::string::npos) << f.message;
   f = load_error("organs:\n  - name: liver\n    mesh: {procedural: heart}\noutput: {loop: true}\n");
   EXPECT_NE(f.message.find("output.loop: no region is driven"), std::string::npos) << f.message;
+  f = load_error("organs:\n  - name: heart\n    mesh: {procedural: heart}\n    regions:\n"
+                 "      - {name: left_ventricle, drive: {waveform: cardiac, rate: 72 bpm, amplitude: 0.1}}\n"
+                 "      - {name: aorta, pinned: true, motion: [{time: 0 s, position: [0, 0, 0]}, {time: 1 s, position: [0, 0.01, 0]}]}\n"
+                 "output: {loop: true}\n");
+  EXPECT_NE(f.message.find("organs[0].regions[1].motion: a prescribed motion is held after its last key"), std::string::npos) << f.message;
   f = load_error(heart("{loop: true}", "interactions:\n  - poke: {organ: heart, at: [0, 0, 0.03], force: [0, 0, -1]}\n"));
   EXPECT_NE(f.message.find("interactions[0]: happens once"), std::string::npos) << f.message;
 }
