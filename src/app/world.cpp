@@ -68,7 +68,7 @@ World build_world(const scene::Scene& scene) {
     options.solver = scene.solver;
     options.dt_s = w.dt_s;
     options.gravity = scene.gravity;
-    options.clip_s = frame_s * (scene.output.start_frame + scene.output.frame_count());
+    options.clip_s = scene.output.start_frame * frame_s + scene.output.duration_s;  // Organ time at the clip's end.
     options.seed = scene.seed;
     options.floor = scene.floor;
     for (const auto& in : scene.interactions) {

@@ -224,7 +224,7 @@ void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
       break;
     case VideoFormat::kWebm:
       // One thread and no row-based threading: libvpx's output then depends only on the
-      // frames (with threads its rate control may differ between runs).
+      // frames (it does not promise the same bits at other thread counts).
       encoder->thread_count = 1;
       encoder->flags |= AV_CODEC_FLAG_BITEXACT;
       av_dict_set_int(&options, "crf", settings.vp9_crf, 0);
