@@ -196,6 +196,25 @@ TEST(OutputFormat, TheExtensionOfDashOChoosesTheFormat) {
   }
 }
 
+TEST(OutputFormat, AGifFasterThan50FpsIsRefusedBeforeAnyWork) {
+  const fs::path dir = scratch("gif_too_fast");
+  const std::string scene = dir / "heart.yaml";
+  write_file(scene, heart("duration: 0.2 s"));
+  write_file(dir / "clip.gif", "earlier");
+  const auto r = run(systole() + " render " + scene + " -D output.fps=60 -o " + (dir / "clip.gif").string());
+  EXPECT_EQ(r.exit_code, 65) << r.output;
+  EXPECT_NE(r.output.find("GIF encoder: fps 60"), std::string::npos) << r.output;
+  EXPECT_EQ(read_file(dir / "clip.gif"), "earlier");
+  // In the scene, the same mistake names the line.
+  std::string yaml = heart("duration: 0.2 s, format: gif");
+  yaml.replace(yaml.find("fps: 30"), 7, "fps: 60");
+  write_file(scene, yaml);
+  const auto v = run(systole() + " validate " + scene);
+  EXPECT_EQ(v.exit_code, 65) << v.output;
+  EXPECT_NE(v.output.find("heart.yaml:11:"), std::string::npos) << v.output;
+  EXPECT_NE(v.output.find("output.fps: 60 is outside (0, 50] for a GIF"), std::string::npos) << v.output;
+}
+
 TEST(OutputFormat, TheDefaultPathTakesTheFormatsExtension) {
   const auto s = scene::load_from_string(heart("duration: 0.2 s, format: webm"), "teaching.yaml", {});
   EXPECT_EQ(app::default_video_path(s), fs::path("out/teaching.webm"));
