@@ -236,7 +236,7 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
 
 std::string describe(const StageTimes& t) {
   const double n = t.frames > 0 ? t.frames : 1;
-  char text[640];
+  char text[512];
   std::snprintf(text, sizeof text,
                 "%d frames in %.2f s: simulate %.2f ms/frame, render %.2f ms/frame, read back %.2f ms/frame, "
                 "anti-alias %.2f ms/frame, encode %.2f ms/frame (stages overlapped)",
