@@ -269,7 +269,8 @@ RenderRequest plan_request(const Job& job, const scene::Scene& scene, const Batc
   const fs::path& o = options.output;
   std::error_code ec;
   const bool output_is_folder = !o.empty() && (options.several || fs::is_directory(o, ec) || !o.has_filename());
-  const fs::path named_video = output_is_folder ? o / (job.name + ".mp4") : o;
+  const std::string extension = default_video_path(scene).extension().string();
+  const fs::path named_video = output_is_folder ? o / (job.name + (extension.empty() ? ".mp4" : extension)) : o;
   if (!options.frames.empty()) {
     // A selection is for stills: a video is written only when asked for with -o (so a
     // partial clip never replaces the default video), and it must be a range.
@@ -284,7 +285,7 @@ RenderRequest plan_request(const Job& job, const scene::Scene& scene, const Batc
       request.video = named_video;
     } else {
       const fs::path scene_default = default_video_path(scene);
-      request.video = job.swept ? scene_default.parent_path() / (job.name + ".mp4") : scene_default;
+      request.video = job.swept ? scene_default.parent_path() / (job.name + (extension.empty() ? ".mp4" : extension)) : scene_default;
     }
   }
   // Folders that name a batch's outputs are ours to create; a file named with -o must be in

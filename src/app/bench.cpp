@@ -82,6 +82,10 @@ Trace run(const scene::Scene& base, const BenchConfig& config, const BenchOption
   s.solver.substeps = config.substeps;
   s.output.fps = options.sample_hz;
   s.output.duration_s = options.duration_s;
+  // The bench samples organ time from 0: a clip's slow motion and loop settling do not apply.
+  s.output.slow_motion = 1;
+  s.output.loop = false;
+  s.output.start_frame = 0;
   for (auto& organ : s.organs) organ.body.lattice = config.lattice;
   World world = build_world(s);
 

@@ -19,6 +19,9 @@ std::string system_info() {
   s << "h264 encoders:";
   for (const auto& e : encode::h264_encoders()) s << " " << e;
   s << "\n";
+  s << "output formats:";
+  for (const auto& f : encode::output_formats()) s << " " << f;
+  s << "\n";
   render::Renderer probe(16, 16, 0);
   const auto gl = probe.info();
   s << "gl vendor " << gl.vendor << "\n";

@@ -1,5 +1,6 @@
 #include "app/limits.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -54,9 +55,10 @@ void check_scene_limits(const scene::Scene& scene, const PlannedOutput& planned,
                     count(pixels) + " pixels",
          count(limits.max_frame_pixels) + " pixels (3840x2160)");
   }
-  if (out.duration_s > limits.max_duration_s) {
+  if (out.duration_s * std::max(1.0, out.slow_motion) > limits.max_duration_s) {
     std::ostringstream what, limit;
     what << "output.duration = " << out.duration_s << " s";
+    if (out.slow_motion > 1) what << " at output.slow_motion " << out.slow_motion << " (" << out.duration_s * out.slow_motion << " s of video)";
     limit << limits.max_duration_s << " s";
     over(scene, what.str(), limit.str());
   }
@@ -78,7 +80,8 @@ void check_world_limits(const scene::Scene& scene, const World& world, const Lim
     over(scene, "the organs' " + count(vertices) + " vertices", count(limits.max_vertices) + " vertices");
   }
   // In floating point: a tiny dt over a long clip overflows any integer.
-  const double substeps = static_cast<double>(substeps_per_frame) * scene.output.frame_count();
+  // A loop's settling frames are simulated too.
+  const double substeps = static_cast<double>(substeps_per_frame) * (scene.output.start_frame + scene.output.frame_count());
   if (substeps > static_cast<double>(limits.max_substeps)) {
     std::ostringstream what;
     what << "the solver's " << substeps << " substeps over the clip (" << world.steps_per_frame

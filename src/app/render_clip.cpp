@@ -9,12 +9,13 @@
 #include <vector>
 
 #include "app/bake.h"
+#include "app/cards.h"
 #include "app/frame_list.h"
 #include "app/frame_pipeline.h"
 #include "app/progress.h"
 #include "app/world.h"
 #include "common/error.h"
-#include "encode/mp4_writer.h"
+#include "encode/video_writer.h"
 #include "encode/png.h"
 #include "mesh/normals.h"
 #include "render/fxaa.h"
@@ -77,11 +78,44 @@ std::vector<int> selected_frames(const RenderRequest& request, int frame_count) 
   return request.frames;
 }
 
+encode::VideoFormat encode_format(scene::Format f) {
+  switch (f) {
+    case scene::Format::kMkv: return encode::VideoFormat::kMkv;
+    case scene::Format::kWebm: return encode::VideoFormat::kWebm;
+    case scene::Format::kGif: return encode::VideoFormat::kGif;
+    default: return encode::VideoFormat::kMp4;
+  }
+}
+
+/// The encoder settings for the scene's output in `format`. VP9's constant quality and
+/// speed follow output.quality like x264's CRF and preset (docs/teaching-visuals.md).
+encode::VideoSettings video_settings(const scene::Output& out, encode::VideoFormat format) {
+  encode::VideoSettings v;
+  v.format = format;
+  v.width = out.width;
+  v.height = out.height;
+  v.fps = out.fps;
+  v.crf = out.crf;
+  v.preset = out.preset;
+  v.threads = kEncoderThreads;
+  const auto [vp9_crf, vp9_speed] = out.quality == scene::Quality::kDraft      ? std::pair{40, 5}
+                                    : out.quality == scene::Quality::kArchival ? std::pair{24, 2}
+                                                                               : std::pair{32, 4};
+  v.vp9_crf = vp9_crf;
+  v.vp9_speed = vp9_speed;
+  return v;
+}
+
 }  // namespace
+
+encode::VideoFormat video_format(const scene::Scene& scene, const std::filesystem::path& video) {
+  if (const auto named = encode::video_format_of(video)) return *named;
+  return encode_format(scene.output.format);
+}
 
 std::filesystem::path default_video_path(const scene::Scene& scene) {
   if (!scene.output.file.empty()) return scene.output.file;
-  return std::filesystem::path("out") / (scene.name + ".mp4");
+  return std::filesystem::path("out") / (scene.name + "." + encode::extension_of(encode_format(scene.output.format)));
 }
 
 StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) {
@@ -114,14 +148,15 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
   }
 
   // Sinks are opened before the first frame so a bad output path fails before any work.
-  std::vector<std::unique_ptr<encode::FrameSink>> sinks;
+  std::unique_ptr<encode::FrameSink> video, png;
   if (!request.video.empty()) {
-    encode::VideoSettings video{out.width, out.height, out.fps, out.crf, out.preset, kEncoderThreads};
-    sinks.push_back(std::make_unique<encode::Mp4Writer>(request.video, video));
+    video = encode::open_video(request.video, video_settings(out, video_format(scene, request.video)));
   }
-  if (!request.png_dir.empty()) {
-    sinks.push_back(std::make_unique<encode::PngSequenceWriter>(request.png_dir, frame_count));
-  }
+  if (!request.png_dir.empty()) png = std::make_unique<encode::PngSequenceWriter>(request.png_dir, frame_count);
+  // Title cards open the video when it starts at the clip's start; PNG frames are the
+  // clip's frames only (with their captions), numbered as always.
+  CardPainter cards(scene);
+  const int video_offset = video && frames.front() == 0 ? cards.card_frames() : 0;
 
   std::vector<Image> images(kPipelineDepth, Image(out.width, out.height));
   render::Fxaa fxaa;
@@ -170,15 +205,29 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
     if (out.antialias == scene::Antialias::kFxaa) fxaa.apply(image);
     times.antialias_s += seconds_since(t0);
     t0 = Clock::now();
-    for (auto& sink : sinks) sink->write(image, frames[static_cast<std::size_t>(i)]);
+    const int f = frames[static_cast<std::size_t>(i)];
+    cards.draw_captions(f, image);
+    if (video) video->write(image, video_offset + f);
+    if (png) png->write(image, f);
     times.encode_s += seconds_since(t0);
     ++times.frames;
     progress.update(times.frames);
   };
+  if (video_offset > 0) {
+    const auto t0 = Clock::now();
+    Image card(out.width, out.height);
+    for (int k = 0; k < video_offset; ++k) {
+      cards.draw_card(k, card);
+      video->write(card, k);
+    }
+    times.card_frames = video_offset;
+    times.encode_s += seconds_since(t0);
+  }
   run_frame_pipeline(static_cast<int>(frames.size()), kPipelineDepth, request.overlap, stages);
 
   const auto t0 = Clock::now();
-  for (auto& sink : sinks) sink->finish();
+  if (video) video->finish();
+  if (png) png->finish();
   times.encode_s += seconds_since(t0);
   progress.finish();
   times.wall_s = seconds_since(start);
@@ -193,7 +242,9 @@ std::string describe(const StageTimes& t) {
                 "anti-alias %.2f ms/frame, encode %.2f ms/frame (stages overlapped)",
                 t.frames, t.wall_s, 1e3 * t.simulate_s / n, 1e3 * t.render_s / n, 1e3 * t.readback_s / n,
                 1e3 * t.antialias_s / n, 1e3 * t.encode_s / n);
-  return text;
+  std::string line = text;
+  if (t.card_frames > 0) line += "; encode includes " + std::to_string(t.card_frames) + " title-card frames";
+  return line;
 }
 
 }  // namespace systole::app

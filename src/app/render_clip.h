@@ -8,12 +8,13 @@
 
 #include "app/limits.h"
 #include "app/progress.h"
+#include "encode/video_writer.h"
 #include "scene/scene.h"
 
 namespace systole::app {
 
 struct RenderRequest {
-  std::filesystem::path video;    ///< MP4 to write; empty: no video.
+  std::filesystem::path video;    ///< Video to write (format: video_format()); empty: no video.
   std::filesystem::path png_dir;  ///< Folder for numbered PNG frames; empty: none.
   /// Frames to render and encode (0-based, sorted, no duplicates; app::parse_frame_list);
   /// empty: every frame. The simulation still steps through every frame up to the last
@@ -36,6 +37,7 @@ struct RenderRequest {
 /// each is the busy time of its own thread (inflated when the stages contend for cores).
 struct StageTimes {
   int frames = 0;          ///< Frames rendered.
+  int card_frames = 0;     ///< Title-card frames written before them (their drawing counts as encode_s).
   double simulate_s = 0;   ///< unit: s
   double render_s = 0;     ///< unit: s
   double readback_s = 0;   ///< unit: s
@@ -53,7 +55,12 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request);
 /// "simulate 1.2 ms/frame, render ..." for the end-of-run summary.
 std::string describe(const StageTimes& times);
 
-/// The default video path for a scene: the scene's output.file, else out/<name>.mp4.
+/// The default video path for a scene: the scene's output.file, else out/<name>.<ext>, the
+/// extension of output.format (.mp4 unless the scene asks for another).
 std::filesystem::path default_video_path(const scene::Scene& scene);
+
+/// The format a video is written in: the one its extension names (.mp4, .mkv, .webm, .gif),
+/// else the scene's output.format. So `-o clip.gif` makes a GIF whatever the scene says.
+encode::VideoFormat video_format(const scene::Scene& scene, const std::filesystem::path& video);
 
 }  // namespace systole::app

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "app/render_clip.h"
 #include "sim/step_size.h"
 
 namespace systole::app {
@@ -73,8 +74,21 @@ std::string summarize(const scene::Scene& scene, const World& world) {
     << world.steps_per_frame << " steps per frame)";
   for (const auto& body : world.organs) s << ", " << body.model.name << " " << body.model.substeps << " substeps";
   s << "\n  why: " << world.step_reason << "\n";
-  s << "output " << scene.output.width << "x" << scene.output.height << ", " << scene.output.fps << " fps, "
-    << scene.output.frame_count() << " frames (" << scene.output.duration_s << " s)\n";
+  const auto& out = scene.output;
+  s << "output " << default_video_path(scene).extension().string().substr(1) << ", " << out.width << "x" << out.height
+    << ", " << out.fps << " fps, " << out.frame_count() << " frames (" << out.duration_s << " s of organ time";
+  if (out.slow_motion != 1) s << " at " << out.slow_motion << "x slow motion: " << out.frame_count() / out.fps << " s of video";
+  s << ")\n";
+  if (out.loop) {
+    s << "  loop: " << out.duration_s << " s, whole cycles of every drive; starts after " << out.start_frame
+      << " settling frames (" << out.start_frame * out.frame_period_s() << " s)\n";
+  }
+  if (!scene.cards.empty() || !scene.captions.empty()) {
+    double cards_s = 0;
+    for (const auto& c : scene.cards) cards_s += c.duration_s;
+    s << "  " << scene.cards.size() << " title card(s) (" << cards_s << " s, before the clip), " << scene.captions.size()
+      << " caption(s)\n";
+  }
   return s.str();
 }
 

@@ -55,7 +55,9 @@ World build_world(const scene::Scene& scene) {
   }
   World w;
   w.fps = scene.output.fps;
-  const double frame_s = 1.0 / scene.output.fps;
+  const double frame_s = scene.output.frame_period_s();
+  w.frame_s = frame_s;
+  w.start_frame = scene.output.start_frame;
   w.steps_per_frame = steps_per_frame(frame_s, scene.solver.dt_s, false);
   w.dt_s = frame_s / w.steps_per_frame;
   w.step_reason = "as the scene sets (solver.dt, solver.substeps), rounded so whole steps make a frame";
@@ -66,7 +68,7 @@ World build_world(const scene::Scene& scene) {
     options.solver = scene.solver;
     options.dt_s = w.dt_s;
     options.gravity = scene.gravity;
-    options.clip_s = scene.output.duration_s;
+    options.clip_s = scene.output.start_frame * frame_s + scene.output.duration_s;  // Organ time at the clip's end.
     options.seed = scene.seed;
     options.floor = scene.floor;
     for (const auto& in : scene.interactions) {
@@ -89,7 +91,7 @@ World build_world(const scene::Scene& scene) {
 void render_positions(const OrganBody& body, Eigen::Matrix3Xd& out) { sim::embed(body.embedding, body.state.x, out); }
 
 void advance_to_frame(World& w, int frame) {
-  for (; w.frames_done < frame; ++w.frames_done) {
+  for (const int target = w.start_frame + frame; w.frames_done < target; ++w.frames_done) {
     for (auto& body : w.organs) {
       for (int k = 0; k < w.steps_per_frame; ++k) sim::step(body.model, body.state, w.dt_s);
       if (auto problem = sim::diagnose(body.model, body.state)) {

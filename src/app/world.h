@@ -28,8 +28,10 @@ struct World {
   std::vector<OrganBody> organs;
   int steps_per_frame = 1;  ///< The solver step divides the frame period exactly.
   double dt_s = 0;          ///< unit: s
-  double fps = 30;          ///< unit: 1/s
-  int frames_done = 0;      ///< Frames the world has been advanced through.
+  double fps = 30;          ///< Video frames per second. unit: 1/s
+  double frame_s = 1.0 / 30;  ///< Organ time between two frames (scene::Output::frame_period_s). unit: s
+  int start_frame = 0;      ///< Frames simulated before the clip's frame 0 (a loop's settling). unit: frames
+  int frames_done = 0;      ///< Frames the world has been advanced through, counting start_frame.
   std::string step_reason;  ///< Why dt and substeps are what they are (for `validate`).
 };
 
@@ -38,7 +40,8 @@ struct World {
 /// number of steps makes one frame.
 World build_world(const scene::Scene& scene);
 
-/// Steps every organ to the time of `frame` (frames only move forward), checking the
+/// Steps every organ to the time of clip frame `frame`, start_s + frame * frame_s
+/// (frames only move forward), checking the
 /// bodies' health at every frame. Throws Error(kDiverged) with the frame, the time, the
 /// cause and a remedy when a body blew up.
 void advance_to_frame(World& world, int frame);

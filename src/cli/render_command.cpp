@@ -64,8 +64,8 @@ Command add_render_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("render", "Simulate and render scenes to videos (and PNG frames).");
   cmd->add_option("scene", o->scenes, "Scene files (YAML), folders of them, or glob patterns")->required();
   cmd->add_option("-o,--output", o->output,
-                  "Video to write (default: output.file, else out/<scene>.mp4); with several jobs, a folder "
-                  "for <job>.mp4");
+                  "Video to write: .mp4 (H.264), .mkv (FFV1, lossless), .webm (VP9) or .gif (default: "
+                  "output.file, else out/<scene>.<output.format>); with several jobs, a folder for <job>.<format>");
   cmd->add_option("--png", o->png_dir,
                   "Also write the frames as numbered PNGs (frame_00042.png) into this folder (a subfolder per "
                   "job in a batch)");

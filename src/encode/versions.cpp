@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <algorithm>
+#include <utility>
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -34,9 +35,19 @@ std::vector<std::string> h264_encoders() {
   while (const AVCodec* codec = av_codec_iterate(&opaque)) {
     if (codec->id == AV_CODEC_ID_H264 && av_codec_is_encoder(codec)) names.emplace_back(codec->name);
   }
-  // libx264 first (it is what Mp4Writer uses), the others in libavcodec's order.
+  // libx264 first (it is what VideoWriter uses), the others in libavcodec's order.
   std::stable_partition(names.begin(), names.end(), [](const std::string& n) { return n == "libx264"; });
   return names;
+}
+
+std::vector<std::string> output_formats() {
+  std::vector<std::string> lines;
+  for (const auto& [format, encoder] : {std::pair{"mp4", "libx264"}, std::pair{"mkv", "ffv1"},
+                                        std::pair{"webm", "libvpx-vp9"}, std::pair{"gif", "gif"}}) {
+    const bool present = avcodec_find_encoder_by_name(encoder) != nullptr;
+    lines.push_back(std::string(format) + " (" + encoder + (present ? ")" : ": missing)"));
+  }
+  return lines;
 }
 
 }  // namespace systole::encode

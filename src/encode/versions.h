@@ -13,4 +13,8 @@ std::vector<std::string> library_versions();
 /// Names of the H.264 encoders libavcodec offers (libx264 first when present).
 std::vector<std::string> h264_encoders();
 
+/// "mp4 (libx264)", "mkv (ffv1)", "webm (libvpx-vp9)", "gif (gif)": the formats `render`
+/// writes and their encoders, "...: missing)" when this libavcodec lacks one.
+std::vector<std::string> output_formats();
+
 }  // namespace systole::encode

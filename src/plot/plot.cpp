@@ -1,8 +1,5 @@
 #include "plot/plot.h"
 
-#include <ft2build.h>
-#include FT_FREETYPE_H
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,23 +8,17 @@
 #include <memory>
 
 #include "common/error.h"
+#include "plot/text.h"
 
 namespace systole::plot {
 namespace {
-
-constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 /// An image with blending: every drawing call takes a coverage in [0, 1] per pixel.
 class Canvas {
  public:
   explicit Canvas(Image& image) : image_(image) {}
 
-  void blend(int x, int y, const Rgb& c, double coverage) {
-    if (x < 0 || y < 0 || x >= image_.width || y >= image_.height || coverage <= 0) return;
-    const double a = std::min(1.0, coverage);
-    std::uint8_t* p = image_.row(y) + 3 * static_cast<std::size_t>(x);
-    for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>(std::lround(p[k] + a * (c[k] - p[k])));
-  }
+  void blend(int x, int y, const Rgb& c, double coverage) { blend_pixel(image_, x, y, c, coverage); }
 
   /// Antialiased segment of the given width: coverage from the distance to the segment.
   void line(double x0, double y0, double x1, double y1, const Rgb& c, double width) {
@@ -73,61 +64,6 @@ class Canvas {
   Image& image_;
 };
 
-/// DejaVu Sans through FreeType, at one pixel size at a time.
-class Font {
- public:
-  Font() {
-    if (FT_Init_FreeType(&library_) != 0) throw Error(ExitCode::kInternal, "FreeType failed to start");
-    if (!std::filesystem::exists(kFontPath) || FT_New_Face(library_, kFontPath, 0, &face_) != 0) {
-      FT_Done_FreeType(library_);
-      throw Error(ExitCode::kNoInput, std::string("cannot load the plot font ") + kFontPath +
-                                          " (install Debian's fonts-dejavu-core: scripts/install-deps)");
-    }
-  }
-  ~Font() {
-    FT_Done_Face(face_);
-    FT_Done_FreeType(library_);
-  }
-  Font(const Font&) = delete;
-  Font& operator=(const Font&) = delete;
-
-  void size(int px) { FT_Set_Pixel_Sizes(face_, 0, static_cast<FT_UInt>(px)); }
-
-  /// Advance width of `text`. unit: px
-  double width(const std::string& text) {
-    double w = 0;
-    for (unsigned char ch : text) {
-      if (FT_Load_Char(face_, ch, FT_LOAD_DEFAULT) == 0) w += face_->glyph->advance.x / 64.0;
-    }
-    return w;
-  }
-
-  /// Draws `text` with its baseline starting at (x, y); `vertical` turns it a quarter
-  /// turn counter-clockwise (reading upwards), starting at (x, y).
-  void draw(Canvas& canvas, const std::string& text, double x, double y, const Rgb& color, bool vertical = false) {
-    double pen = 0;
-    for (unsigned char ch : text) {
-      if (FT_Load_Char(face_, ch, FT_LOAD_RENDER) != 0) continue;
-      const FT_GlyphSlot g = face_->glyph;
-      for (unsigned row = 0; row < g->bitmap.rows; ++row) {
-        for (unsigned col = 0; col < g->bitmap.width; ++col) {
-          const double coverage = g->bitmap.buffer[row * g->bitmap.pitch + col] / 255.0;
-          const double u = pen + g->bitmap_left + col, v = double(row) - g->bitmap_top;
-          if (vertical) {
-            canvas.blend(int(std::lround(x + v)), int(std::lround(y - u)), color, coverage);
-          } else {
-            canvas.blend(int(std::lround(x + u)), int(std::lround(y + v)), color, coverage);
-          }
-        }
-      }
-      pen += g->advance.x / 64.0;
-    }
-  }
-
- private:
-  FT_Library library_ = nullptr;
-  FT_Face face_ = nullptr;
-};
 
 std::string tick_text(double v) {
   char text[32];
@@ -224,23 +160,23 @@ Image render(const Figure& figure) {
     const double px = to_px(t, y_axis.min).first;
     canvas.line(px, top, px, bottom, grid, 1);
     const std::string text = tick_text(t);
-    font.draw(canvas, text, px - font.width(text) / 2, bottom + 22, ink);
+    font.draw(image, text, px - font.width(text) / 2, bottom + 22, ink);
   }
   for (double t : ticks(y_axis)) {
     const double py = to_px(x_axis.min, t).second;
     canvas.line(left, py, right, py, grid, 1);
     const std::string text = tick_text(t);
-    font.draw(canvas, text, left - 8 - font.width(text), py + 5, ink);
+    font.draw(image, text, left - 8 - font.width(text), py + 5, ink);
   }
   canvas.line(left, bottom, right, bottom, ink, 1.5);
   canvas.line(left, top, left, bottom, ink, 1.5);
 
   font.size(17);
-  font.draw(canvas, x_axis.label, (left + right) / 2.0 - font.width(x_axis.label) / 2, figure.height - 25, ink);
-  font.draw(canvas, y_axis.label, 28, (top + bottom) / 2.0 + font.width(y_axis.label) / 2, ink, true);
+  font.draw(image, x_axis.label, (left + right) / 2.0 - font.width(x_axis.label) / 2, figure.height - 25, ink);
+  font.draw(image, y_axis.label, 28, (top + bottom) / 2.0 + font.width(y_axis.label) / 2, ink, 1, true);
   if (!figure.title.empty()) {
     font.size(20);
-    font.draw(canvas, figure.title, (left + right) / 2.0 - font.width(figure.title) / 2, 35, ink);
+    font.draw(image, figure.title, (left + right) / 2.0 - font.width(figure.title) / 2, 35, ink);
   }
 
   font.size(12);
@@ -253,7 +189,7 @@ Image render(const Figure& figure) {
     for (const auto& p : s.points) {
       const auto [px, py] = to_px(p.x, p.y);
       canvas.marker(px, py, s.marker, s.marker_px, s.color);
-      if (!p.label.empty()) font.draw(canvas, p.label, px + s.marker_px / 2 + 3, py - 3, ink);
+      if (!p.label.empty()) font.draw(image, p.label, px + s.marker_px / 2 + 3, py - 3, ink);
     }
   }
 
@@ -272,7 +208,7 @@ Image render(const Figure& figure) {
       const double cy = y0 + 4 + row * (i + 0.5);
       if (listed[i]->line) canvas.line(x0 + 6, cy, x0 + 30, cy, listed[i]->color, 2);
       canvas.marker(x0 + 18, cy, listed[i]->marker, listed[i]->marker_px, listed[i]->color);
-      font.draw(canvas, listed[i]->name, x0 + 36, cy + 5, ink);
+      font.draw(image, listed[i]->name, x0 + 36, cy + 5, ink);
     }
   }
   return image;

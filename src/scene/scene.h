@@ -224,19 +224,40 @@ enum class Quality {
   kArchival,  ///< Smallest artefacts, slower encode: for keeping.
 };
 
+/// The video file's container and codec (docs/teaching-visuals.md, "Timing and formats").
+enum class Format {
+  kAuto,  ///< From output.file's extension; .mp4 when there is no file.
+  kMp4,   ///< H.264 in MP4: plays everywhere.
+  kMkv,   ///< FFV1 in Matroska: lossless RGB, for archives.
+  kWebm,  ///< VP9 in WebM: for web pages.
+  kGif,   ///< Animated GIF with one palette: for slides.
+};
+
 struct Output {
-  std::string file;        ///< Video path; empty: out/<scene name>.mp4 beside the working dir.
+  std::string file;        ///< Video path; empty: out/<scene name>.<format's extension>.
+  Format format = Format::kAuto;  ///< After loading never kAuto: resolved from `file`.
   int width = 1280;        ///< unit: px, even
   int height = 720;        ///< unit: px, even
   double fps = 30;         ///< unit: 1/s
-  double duration_s = 10;  ///< unit: s
+  double duration_s = 10;  ///< Organ time shown, after loading a whole number of loops when `loop`. unit: s
+  /// Video seconds per second of organ time: 4 shows a beat four times slower. The body is
+  /// simulated at its true rate; frame k shows organ time start_s + k * frame_period_s().
+  double slow_motion = 1;  ///< unit: 1
+  /// Snap the clip to whole cycles of the slowest drive so its last frame flows into its first.
+  bool loop = false;
+  int settle_cycles = 2;   ///< loop: cycles (of the slowest drive) simulated before the clip starts, at least. unit: 1
+  // Resolved on loading (scene::load), not keys:
+  int start_frame = 0;       ///< loop: frames simulated before the clip's frame 0 (whole loops). unit: frames
   Quality quality = Quality::kStandard;
   int crf = 20;            ///< x264 constant rate factor, 0 (lossless) to 51; default: the quality's.
   std::string preset = "veryfast";  ///< x264 preset; default: the quality's.
   Antialias antialias = Antialias::kFxaa;
   Color background = Color(0.06, 0.07, 0.09);
 
-  int frame_count() const;  ///< round(duration * fps).
+  int frame_count() const;  ///< Frames of the clip (title cards not counted): round(duration * fps * slow_motion).
+  /// Organ time between two frames: 1 / (fps * slow_motion), or for a loop duration /
+  /// frame_count() exactly (the playback rate then differs by less than 1 / (2 frames)). unit: s
+  double frame_period_s() const;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -268,6 +289,30 @@ struct Floor {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< Points to the free side (normalised). unit: 1
 };
 
+// ---------------------------------------------------------------------------------------
+// Title cards and captions (app/cards.h draws them).
+
+/// Full-frame text on the background colour, shown before the clip.
+struct Card {
+  std::string text;              ///< Lines separated by "\n"; the first is the title.
+  double duration_s = 3;         ///< unit: s (video time)
+  double fade_s = 0.5;           ///< Fade in and out. unit: s
+  double size = 0.08;            ///< Title height as a fraction of the frame height. unit: 1
+  Color color = Color(0.95, 0.95, 0.95);
+  Origin origin;
+};
+
+/// Text at the bottom of the clip over a time range, fading in and out.
+struct Caption {
+  std::string text;
+  double from_s = 0;             ///< Video time from the clip's first frame (after the cards). unit: s
+  double to_s = 0;               ///< unit: s
+  double fade_s = 0.3;           ///< unit: s
+  double size = 0.05;            ///< Text height as a fraction of the frame height. unit: 1
+  Color color = Color(1, 1, 1);
+  Origin origin;
+};
+
 struct Scene {
   std::string path;         ///< The YAML file it came from.
   std::string name;         ///< File stem: names default outputs.
@@ -280,6 +325,8 @@ struct Scene {
   Camera camera;
   std::vector<Light> lights;
   Output output;
+  std::vector<Card> cards;         ///< Shown in order before the clip.
+  std::vector<Caption> captions;
 };
 
 }  // namespace systole::scene

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +19,7 @@
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
+#include <libswscale/swscale.h>
 }
 
 namespace systole::encode::test {
@@ -148,6 +151,99 @@ inline std::vector<YuvFrame> decode_all(const fs::path& file) {
   avcodec_free_context(&dec);
   avformat_close_input(&fmt);
   return frames;
+}
+
+inline /// Decodes every frame of the file's video stream into RGB24: BT.709 limited-range YUV
+/// through swscale's exact-rounding path, RGB (bgr0, planar GBR) and PAL8 by copying values.
+std::vector<Image> decode_rgb(const fs::path& file) {
+  std::vector<Image> frames;
+  AVFormatContext* fmt = nullptr;
+  if (avformat_open_input(&fmt, file.c_str(), nullptr, nullptr) < 0) return frames;
+  avformat_find_stream_info(fmt, nullptr);
+  const AVCodec* codec = nullptr;
+  const int index = av_find_best_stream(fmt, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0);
+  AVCodecContext* dec = avcodec_alloc_context3(codec);
+  avcodec_parameters_to_context(dec, fmt->streams[index]->codecpar);
+  avcodec_open2(dec, codec, nullptr);
+  AVPacket* pkt = av_packet_alloc();
+  AVFrame* frame = av_frame_alloc();
+  auto drain = [&] {
+    while (avcodec_receive_frame(dec, frame) == 0) {
+      Image rgb(frame->width, frame->height);
+      const auto f = static_cast<AVPixelFormat>(frame->format);
+      if (f == AV_PIX_FMT_GBRP) {
+        for (int y = 0; y < rgb.height; ++y)
+          for (int x = 0; x < rgb.width; ++x) {
+            auto at = [&](int plane) { return frame->data[plane][static_cast<std::ptrdiff_t>(y) * frame->linesize[plane] + x]; };
+            std::uint8_t* p = rgb.row(y) + 3 * x;
+            p[0] = at(2), p[1] = at(0), p[2] = at(1);  // GBRP planes: G, B, R.
+          }
+      } else if (f == AV_PIX_FMT_PAL8 || f == AV_PIX_FMT_BGR0 || f == AV_PIX_FMT_BGRA || f == AV_PIX_FMT_RGB24 || f == AV_PIX_FMT_RGBA) {
+        SwsContext* sws = sws_getContext(rgb.width, rgb.height, f, rgb.width, rgb.height, AV_PIX_FMT_RGB24, SWS_POINT,
+                                         nullptr, nullptr, nullptr);
+        std::uint8_t* dst[1] = {rgb.rgb.data()};
+        const int stride[1] = {rgb.width * 3};
+        sws_scale(sws, frame->data, frame->linesize, 0, rgb.height, dst, stride);
+        sws_freeContext(sws);
+      } else {
+        SwsContext* sws = sws_getContext(rgb.width, rgb.height, f, rgb.width, rgb.height, AV_PIX_FMT_RGB24,
+                                         SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr, nullptr);
+        const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+        sws_setColorspaceDetails(sws, bt709, 0, bt709, 1, 0, 1 << 16, 1 << 16);
+        std::uint8_t* dst[1] = {rgb.rgb.data()};
+        const int stride[1] = {rgb.width * 3};
+        sws_scale(sws, frame->data, frame->linesize, 0, rgb.height, dst, stride);
+        sws_freeContext(sws);
+      }
+      frames.push_back(std::move(rgb));
+      av_frame_unref(frame);
+    }
+  };
+  while (av_read_frame(fmt, pkt) >= 0) {
+    if (pkt->stream_index == index) {
+      avcodec_send_packet(dec, pkt);
+      drain();
+    }
+    av_packet_unref(pkt);
+  }
+  avcodec_send_packet(dec, nullptr);
+  drain();
+  av_frame_free(&frame);
+  av_packet_free(&pkt);
+  avcodec_free_context(&dec);
+  avformat_close_input(&fmt);
+  return frames;
+}
+
+/// A shaded, pulsing blob on a dark vignette with a little texture: like a rendered organ.
+inline Image organ_frame(int width, int height, int index) {
+  Image image(width, height);
+  const double phase = 2 * M_PI * index / 30.0;
+  const double cx = width * (0.5 + 0.05 * std::sin(phase * 0.5)), cy = height * 0.5;
+  const double radius = height * (0.33 + 0.03 * std::sin(phase));
+  for (int y = 0; y < height; ++y) {
+    std::uint8_t* row = image.row(y);
+    for (int x = 0; x < width; ++x) {
+      const double dx = (x - cx) / radius, dy = (y - cy) / (radius * 1.2);
+      const double d2 = dx * dx + dy * dy;
+      const double vignette = 40 * (1 - 0.5 * ((x - width / 2.0) * (x - width / 2.0) + (y - height / 2.0) * (y - height / 2.0)) /
+                                            (width * width / 4.0));
+      double r = vignette * 0.6, g = vignette * 0.7, b = vignette;
+      if (d2 < 1) {
+        const double nz = std::sqrt(1 - d2);
+        const double diffuse = std::max(0.0, -0.4 * dx - 0.5 * dy + 0.77 * nz);
+        const double spec = std::pow(std::max(0.0, 0.3 * -dx + 0.3 * -dy + 0.9 * nz), 40);
+        const double vein = 0.5 + 0.5 * std::sin(dx * 23 + std::sin(dy * 7 + phase) * 3);
+        r = 40 + 170 * diffuse * (0.9 + 0.1 * vein) + 200 * spec;
+        g = 15 + 60 * diffuse * (0.8 + 0.2 * vein) + 200 * spec;
+        b = 20 + 55 * diffuse + 200 * spec;
+      }
+      row[3 * x + 0] = static_cast<std::uint8_t>(std::min(255.0, r));
+      row[3 * x + 1] = static_cast<std::uint8_t>(std::min(255.0, g));
+      row[3 * x + 2] = static_cast<std::uint8_t>(std::min(255.0, b));
+    }
+  }
+  return image;
 }
 
 }  // namespace systole::encode::test

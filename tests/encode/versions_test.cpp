@@ -23,5 +23,10 @@ TEST(Versions, Libx264IsTheFirstH264Encoder) {
   for (const auto& n : names) EXPECT_FALSE(n.empty());
 }
 
+TEST(Versions, EveryOutputFormatHasItsEncoder) {
+  const std::vector<std::string> expected = {"mp4 (libx264)", "mkv (ffv1)", "webm (libvpx-vp9)", "gif (gif)"};
+  EXPECT_EQ(output_formats(), expected);
+}
+
 }  // namespace
 }  // namespace systole::encode

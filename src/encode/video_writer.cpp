@@ -1,6 +1,8 @@
-#include "encode/mp4_writer.h"
+#include "encode/video_writer.h"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <string_view>
@@ -8,6 +10,7 @@
 #include "common/atomic_output.h"
 #include "common/error.h"
 #include "encode/av_error.h"
+#include "encode/gif_writer.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -27,9 +30,33 @@ using detail::av_error_text;
 constexpr std::array<std::string_view, 10> kX264Presets = {
     "ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow", "placebo"};
 
-[[noreturn]] void fail(ExitCode code, const std::string& what) { throw Error(code, "MP4 encoder: " + what); }
+/// What differs between the formats VideoWriter writes.
+struct Codec {
+  const char* encoder;   ///< libavcodec encoder name.
+  const char* muxer;     ///< libavformat muxer name.
+  const char* label;     ///< For messages: "MP4", ...
+  AVPixelFormat pix_fmt;
+  bool yuv;              ///< BT.709 limited-range YUV; otherwise full-range RGB planes.
+};
+
+const Codec& codec_of(VideoFormat f) {
+  static const Codec mp4{"libx264", "mp4", "MP4", AV_PIX_FMT_YUV420P, true};
+  static const Codec mkv{"ffv1", "matroska", "MKV", AV_PIX_FMT_BGR0, false};
+  static const Codec webm{"libvpx-vp9", "webm", "WebM", AV_PIX_FMT_YUV420P, true};
+  switch (f) {
+    case VideoFormat::kMkv: return mkv;
+    case VideoFormat::kWebm: return webm;
+    default: return mp4;
+  }
+}
+
+[[noreturn]] void fail(ExitCode code, const std::string& what, VideoFormat f) {
+  throw Error(code, std::string(codec_of(f).label) + " encoder: " + what);
+}
 
 void validate(const VideoSettings& s) {
+  const auto fail = [&](ExitCode code, const std::string& what) { ::systole::encode::fail(code, what, s.format); };
+  if (s.format == VideoFormat::kGif) fail(ExitCode::kInternal, "GIF is GifWriter's (open_video)");
   if (s.width <= 0 || s.height <= 0) {
     fail(ExitCode::kDataError, "video size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                                    " must be positive");
@@ -59,12 +86,37 @@ void validate(const VideoSettings& s) {
     list += (list.empty() ? "" : ", ") + std::string(p);
   }
   if (!known) fail(ExitCode::kDataError, "unknown x264 preset '" + s.preset + "'; use one of " + list);
+  if (s.vp9_crf < 0 || s.vp9_crf > 63) fail(ExitCode::kDataError, "VP9 crf " + std::to_string(s.vp9_crf) + " must be in 0..63");
+  if (s.vp9_speed < 0 || s.vp9_speed > 5) fail(ExitCode::kDataError, "VP9 speed " + std::to_string(s.vp9_speed) + " must be in 0..5");
   if (s.threads < 0 || s.threads > 64) {
     fail(ExitCode::kDataError, "threads " + std::to_string(s.threads) + " must be in 0..64 (0 = automatic)");
   }
 }
 
 }  // namespace
+
+std::optional<VideoFormat> video_format_of(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (VideoFormat f : {VideoFormat::kMp4, VideoFormat::kMkv, VideoFormat::kWebm, VideoFormat::kGif}) {
+    if (ext == std::string(".") + extension_of(f)) return f;
+  }
+  return std::nullopt;
+}
+
+const char* extension_of(VideoFormat format) {
+  switch (format) {
+    case VideoFormat::kMkv: return "mkv";
+    case VideoFormat::kWebm: return "webm";
+    case VideoFormat::kGif: return "gif";
+    default: return "mp4";
+  }
+}
+
+std::unique_ptr<FrameSink> open_video(const std::filesystem::path& target, const VideoSettings& settings) {
+  if (settings.format == VideoFormat::kGif) return std::make_unique<GifWriter>(target, GifSettings{settings.width, settings.height, settings.fps});
+  return std::make_unique<VideoWriter>(target, settings);
+}
 
 FrameRate frame_rate_of(double fps) {
   // NTSC rates are written 29.97 & co. but mean N*1000/1001 exactly.
@@ -76,8 +128,9 @@ FrameRate frame_rate_of(double fps) {
   return {q.num, q.den};
 }
 
-struct Mp4Writer::Impl {
+struct VideoWriter::Impl {
   VideoSettings settings;
+  const Codec& codec;
   AtomicOutput output;
   AVFormatContext* format = nullptr;
   AVCodecContext* encoder = nullptr;
@@ -89,7 +142,8 @@ struct Mp4Writer::Impl {
   int first_index = 0;
   bool finished = false;
 
-  Impl(const std::filesystem::path& target, const VideoSettings& s) : settings(s), output(target) {}
+  Impl(const std::filesystem::path& target, const VideoSettings& s)
+      : settings(s), codec(codec_of(s.format)), output(target) {}
 
   ~Impl() {
     sws_freeContext(sws);
@@ -103,32 +157,34 @@ struct Mp4Writer::Impl {
     // `output`'s destructor then removes the temporary unless it was committed.
   }
 
+  [[noreturn]] void fail(ExitCode code, const std::string& what) const { encode::fail(code, what, settings.format); }
   void open();
-  void open_encoder(const AVCodec* codec);
+  void open_encoder(const AVCodec* av_codec);
   void open_converter();
   void open_file();
   void send(const AVFrame* f);
 };
 
-void Mp4Writer::Impl::open() {
+void VideoWriter::Impl::open() {
   detail::quiet_libav_logging();
-  const AVCodec* codec = avcodec_find_encoder_by_name("libx264");
-  if (codec == nullptr) {
-    fail(ExitCode::kInternal,
-         "this FFmpeg build has no libx264 encoder (check `systole info`; install an FFmpeg built with "
-         "--enable-libx264)");
+  const AVCodec* av_codec = avcodec_find_encoder_by_name(codec.encoder);
+  if (av_codec == nullptr) {
+    fail(ExitCode::kInternal, std::string("this FFmpeg build has no ") + codec.encoder +
+                                  " encoder (check `systole info`; install Debian's libavcodec59)");
   }
   const std::string path = output.temp_path().string();
   // The format is forced: the temporary's name is not something to guess a format from.
-  int err = avformat_alloc_output_context2(&format, nullptr, "mp4", path.c_str());
-  if (err < 0 || format == nullptr) fail(ExitCode::kInternal, "cannot set up the MP4 muxer: " + av_error_text(err));
-  open_encoder(codec);
+  int err = avformat_alloc_output_context2(&format, nullptr, codec.muxer, path.c_str());
+  if (err < 0 || format == nullptr) fail(ExitCode::kInternal, "cannot set up the muxer: " + av_error_text(err));
+  // No random segment IDs, dates or library versions: the same frames give the same bytes.
+  format->flags |= AVFMT_FLAG_BITEXACT;
+  open_encoder(av_codec);
   open_converter();
   open_file();
 }
 
-void Mp4Writer::Impl::open_encoder(const AVCodec* codec) {
-  encoder = avcodec_alloc_context3(codec);
+void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
+  encoder = avcodec_alloc_context3(av_codec);
   frame = av_frame_alloc();
   packet = av_packet_alloc();
   if (encoder == nullptr || frame == nullptr || packet == nullptr) fail(ExitCode::kInternal, "out of memory");
@@ -136,30 +192,63 @@ void Mp4Writer::Impl::open_encoder(const AVCodec* codec) {
   const FrameRate rate = frame_rate_of(settings.fps);
   encoder->width = settings.width;
   encoder->height = settings.height;
-  encoder->pix_fmt = AV_PIX_FMT_YUV420P;
+  encoder->pix_fmt = codec.pix_fmt;
   encoder->framerate = AVRational{rate.num, rate.den};
   encoder->time_base = AVRational{rate.den, rate.num};  // One tick per frame: pts = frame number.
   encoder->sample_aspect_ratio = AVRational{1, 1};
-  // CRF 0 is lossless, which x264 encodes only in the High 4:4:4 Predictive profile (4:2:0
-  // samples still): the joined segments of a bake then decode to exactly the single run's
-  // frames. Every other CRF uses High, which every player decodes.
-  const bool lossless = settings.crf == 0;
-  encoder->profile = lossless ? FF_PROFILE_H264_HIGH_444_PREDICTIVE : FF_PROFILE_H264_HIGH;
-  // Limited ("tv") range with BT.709 everywhere, matching the swscale conversion below.
-  encoder->color_range = AVCOL_RANGE_MPEG;
-  encoder->color_primaries = AVCOL_PRI_BT709;
-  encoder->color_trc = AVCOL_TRC_BT709;
-  encoder->colorspace = AVCOL_SPC_BT709;
-  encoder->thread_count = settings.threads;
+  if (codec.yuv) {
+    // Limited ("tv") range with BT.709 everywhere, matching the swscale conversion below.
+    encoder->color_range = AVCOL_RANGE_MPEG;
+    encoder->color_primaries = AVCOL_PRI_BT709;
+    encoder->color_trc = AVCOL_TRC_BT709;
+    encoder->colorspace = AVCOL_SPC_BT709;
+  } else {
+    // The rendered sRGB values themselves, in planes: nothing converted, nothing lost.
+    encoder->color_range = AVCOL_RANGE_JPEG;
+    encoder->color_primaries = AVCOL_PRI_BT709;
+    encoder->color_trc = AVCOL_TRC_IEC61966_2_1;
+    encoder->colorspace = AVCOL_SPC_RGB;
+  }
   if (format->oformat->flags & AVFMT_GLOBALHEADER) encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
 
   AVDictionary* options = nullptr;
-  av_dict_set(&options, "preset", settings.preset.c_str(), 0);
-  av_dict_set(&options, "profile", lossless ? "high444" : "high", 0);
-  av_dict_set_int(&options, "crf", settings.crf, 0);
-  const int err = avcodec_open2(encoder, codec, &options);
+  switch (settings.format) {
+    case VideoFormat::kMkv:
+      // Level 3 with per-slice CRCs: an archive that can tell when it has been damaged. One
+      // thread: FFV1's bits do not depend on it, and the other core renders.
+      encoder->thread_count = 1;
+      encoder->flags |= AV_CODEC_FLAG_BITEXACT;
+      av_dict_set(&options, "level", "3", 0);
+      av_dict_set(&options, "slicecrc", "1", 0);
+      av_dict_set(&options, "g", "1", 0);  // Every frame a key frame: any frame can be cut out.
+      break;
+    case VideoFormat::kWebm:
+      // One thread and no row-based threading: libvpx's output then depends only on the
+      // frames (it does not promise the same bits at other thread counts).
+      encoder->thread_count = 1;
+      encoder->flags |= AV_CODEC_FLAG_BITEXACT;
+      av_dict_set_int(&options, "crf", settings.vp9_crf, 0);
+      av_dict_set(&options, "b", "0", 0);  // Constant quality, no bitrate target.
+      av_dict_set(&options, "deadline", "good", 0);
+      av_dict_set_int(&options, "cpu-used", settings.vp9_speed, 0);
+      av_dict_set(&options, "row-mt", "0", 0);
+      break;
+    default: {
+      // CRF 0 is lossless, which x264 encodes only in the High 4:4:4 Predictive profile
+      // (4:2:0 samples still): the joined segments of a bake then decode to exactly the
+      // single run's frames. Every other CRF uses High, which every player decodes.
+      const bool lossless = settings.crf == 0;
+      encoder->profile = lossless ? FF_PROFILE_H264_HIGH_444_PREDICTIVE : FF_PROFILE_H264_HIGH;
+      encoder->thread_count = settings.threads;
+      av_dict_set(&options, "preset", settings.preset.c_str(), 0);
+      av_dict_set(&options, "profile", lossless ? "high444" : "high", 0);
+      av_dict_set_int(&options, "crf", settings.crf, 0);
+      break;
+    }
+  }
+  const int err = avcodec_open2(encoder, av_codec, &options);
   av_dict_free(&options);
-  if (err < 0) fail(ExitCode::kInternal, "cannot open libx264: " + av_error_text(err));
+  if (err < 0) fail(ExitCode::kInternal, std::string("cannot open ") + codec.encoder + ": " + av_error_text(err));
 
   frame->format = encoder->pix_fmt;
   frame->width = encoder->width;
@@ -181,13 +270,14 @@ void Mp4Writer::Impl::open_encoder(const AVCodec* codec) {
   }
 }
 
-void Mp4Writer::Impl::open_converter() {
+void VideoWriter::Impl::open_converter() {
   // Accurate rounding and full chroma interpolation: the frames are smooth shading, where
-  // banding and chroma fringes show.
+  // banding and chroma fringes show. RGB24 to BGR0 is a plain reordering of bytes.
   sws = sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGB24, settings.width, settings.height,
-                       AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr,
+                       codec.pix_fmt, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr,
                        nullptr);
-  if (sws == nullptr) fail(ExitCode::kInternal, "cannot set up the RGB to YUV conversion");
+  if (sws == nullptr) fail(ExitCode::kInternal, "cannot set up the RGB conversion");
+  if (!codec.yuv) return;
   // RGB in full range to BT.709 limited-range YUV. For an RGB source swscale builds its
   // RGB->YUV matrix from the destination `table`.
   const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
@@ -197,14 +287,16 @@ void Mp4Writer::Impl::open_converter() {
   }
 }
 
-void Mp4Writer::Impl::open_file() {
+void VideoWriter::Impl::open_file() {
   int err = avio_open(&format->pb, output.temp_path().c_str(), AVIO_FLAG_WRITE);
   if (err < 0) {
     throw Error(ExitCode::kCannotCreate,
                 "cannot create '" + output.temp_path().string() + "': " + av_error_text(err));
   }
   AVDictionary* options = nullptr;
-  av_dict_set(&options, "movflags", "+faststart", 0);  // moov before mdat: plays while downloading.
+  if (settings.format == VideoFormat::kMp4) {
+    av_dict_set(&options, "movflags", "+faststart", 0);  // moov before mdat: plays while downloading.
+  }
   err = avformat_write_header(format, &options);
   av_dict_free(&options);
   if (err < 0) {
@@ -213,13 +305,13 @@ void Mp4Writer::Impl::open_file() {
 }
 
 // Sends one frame (nullptr: flush) and writes every packet the encoder has ready.
-void Mp4Writer::Impl::send(const AVFrame* f) {
+void VideoWriter::Impl::send(const AVFrame* f) {
   int err = avcodec_send_frame(encoder, f);
-  if (err < 0) fail(ExitCode::kInternal, "libx264 refused a frame: " + av_error_text(err));
+  if (err < 0) fail(ExitCode::kInternal, std::string(codec.encoder) + " refused a frame: " + av_error_text(err));
   for (;;) {
     err = avcodec_receive_packet(encoder, packet);
     if (err == AVERROR(EAGAIN) || err == AVERROR_EOF) return;
-    if (err < 0) fail(ExitCode::kInternal, "libx264 failed: " + av_error_text(err));
+    if (err < 0) fail(ExitCode::kInternal, std::string(codec.encoder) + " failed: " + av_error_text(err));
     // libavcodec 59's libx264 wrapper leaves durations at 0, which makes the last frame
     // last 0 s (a 30-frame clip at 30 fps would be 0.967 s). One frame = one tick.
     if (packet->duration == 0) packet->duration = 1;
@@ -233,35 +325,35 @@ void Mp4Writer::Impl::send(const AVFrame* f) {
   }
 }
 
-Mp4Writer::Mp4Writer(const std::filesystem::path& target, const VideoSettings& settings) {
+VideoWriter::VideoWriter(const std::filesystem::path& target, const VideoSettings& settings) {
   validate(settings);
   impl_ = std::make_unique<Impl>(target, settings);
   impl_->open();
 }
 
-Mp4Writer::~Mp4Writer() = default;
+VideoWriter::~VideoWriter() = default;
 
-int Mp4Writer::frame_count() const { return static_cast<int>(impl_->frames); }
+int VideoWriter::frame_count() const { return static_cast<int>(impl_->frames); }
 
-void Mp4Writer::write(const Image& image, int frame_index) {
+void VideoWriter::write(const Image& image, int frame_index) {
   Impl& m = *impl_;
-  if (m.finished) fail(ExitCode::kInternal, "write() after finish()");
+  if (m.finished) m.fail(ExitCode::kInternal, "write() after finish()");
   const VideoSettings& s = m.settings;
   if (image.width != s.width || image.height != s.height ||
       image.rgb.size() != static_cast<std::size_t>(s.width) * s.height * 3) {
-    fail(ExitCode::kInternal, "frame " + std::to_string(frame_index) + " is " + std::to_string(image.width) + "x" +
+    m.fail(ExitCode::kInternal, "frame " + std::to_string(frame_index) + " is " + std::to_string(image.width) + "x" +
                                   std::to_string(image.height) + ", the video is " + std::to_string(s.width) +
                                   "x" + std::to_string(s.height));
   }
   if (m.frames == 0) {
     m.first_index = frame_index;
   } else if (frame_index != m.first_index + m.frames) {
-    fail(ExitCode::kInternal, "frame " + std::to_string(frame_index) + " arrived; expected frame " +
+    m.fail(ExitCode::kInternal, "frame " + std::to_string(frame_index) + " arrived; expected frame " +
                                   std::to_string(m.first_index + m.frames));
   }
   // The encoder may still hold a reference to the buffers; this copies only then.
   int err = av_frame_make_writable(m.frame);
-  if (err < 0) fail(ExitCode::kInternal, "cannot get a writable frame: " + av_error_text(err));
+  if (err < 0) m.fail(ExitCode::kInternal, "cannot get a writable frame: " + av_error_text(err));
   const std::uint8_t* src[1] = {image.rgb.data()};
   const int src_stride[1] = {s.width * 3};
   sws_scale(m.sws, src, src_stride, 0, s.height, m.frame->data, m.frame->linesize);
@@ -270,18 +362,18 @@ void Mp4Writer::write(const Image& image, int frame_index) {
   ++m.frames;
 }
 
-void Mp4Writer::finish() {
+void VideoWriter::finish() {
   Impl& m = *impl_;
-  if (m.finished) fail(ExitCode::kInternal, "finish() called twice");
-  if (m.frames == 0) fail(ExitCode::kInternal, "no frame was written to '" + m.output.target().string() + "'");
+  if (m.finished) m.fail(ExitCode::kInternal, "finish() called twice");
+  if (m.frames == 0) m.fail(ExitCode::kInternal, "no frame was written to '" + m.output.target().string() + "'");
   m.send(nullptr);
   int err = av_write_trailer(m.format);  // With +faststart this also moves moov to the front.
   if (err < 0) {
-    fail(ExitCode::kIoError, "cannot finish '" + m.output.target().string() + "': " + av_error_text(err));
+    m.fail(ExitCode::kIoError, "cannot finish '" + m.output.target().string() + "': " + av_error_text(err));
   }
   err = avio_closep(&m.format->pb);
   if (err < 0) {
-    fail(ExitCode::kIoError, "cannot close '" + m.output.temp_path().string() + "': " + av_error_text(err));
+    m.fail(ExitCode::kIoError, "cannot close '" + m.output.temp_path().string() + "': " + av_error_text(err));
   }
   m.output.commit();
   m.finished = true;

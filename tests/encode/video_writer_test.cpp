@@ -1,4 +1,4 @@
-#include "encode/mp4_writer.h"
+#include "encode/video_writer.h"
 
 #include <gtest/gtest.h>
 
@@ -58,7 +58,7 @@ VideoSettings small_settings() {
 }
 
 fs::path write_clip(const fs::path& file, const VideoSettings& s, int frames, int first_index = 0) {
-  Mp4Writer writer(file, s);
+  VideoWriter writer(file, s);
   for (int i = 0; i < frames; ++i) writer.write(moving_frame(s.width, s.height, i), first_index + i);
   EXPECT_EQ(writer.frame_count(), frames);
   writer.finish();
@@ -82,7 +82,7 @@ void expect_only(const fs::path& dir, const std::vector<std::string>& expected) 
   EXPECT_EQ(names, expected);
 }
 
-TEST(Mp4Writer, ProbesAsHighProfileBt709LimitedRangeWithExactTiming) {
+TEST(VideoWriter, ProbesAsHighProfileBt709LimitedRangeWithExactTiming) {
   const fs::path file = write_clip(scratch_dir() / "clip.mp4", small_settings(), 30);
   const std::string json = test::ffprobe_json(file);
   ASSERT_NE(json.find("\"streams\""), std::string::npos) << json;
@@ -105,7 +105,7 @@ TEST(Mp4Writer, ProbesAsHighProfileBt709LimitedRangeWithExactTiming) {
   EXPECT_EQ(test::json_value(json, "format_name", "format"), "mov,mp4,m4a,3gp,3g2,mj2");
 }
 
-TEST(Mp4Writer, FaststartPutsMoovBeforeMdat) {
+TEST(VideoWriter, FaststartPutsMoovBeforeMdat) {
   const fs::path file = write_clip(scratch_dir() / "clip.mp4", small_settings(), 30);
   const std::vector<std::string> boxes = test::top_level_boxes(file);
   ASSERT_FALSE(boxes.empty());
@@ -135,7 +135,7 @@ std::array<double, 3> bt709_to_rgb(double Y, double U, double V) {
   return {255 * r, 255 * g, 255 * b};
 }
 
-TEST(Mp4Writer, PrimaryColoursComeBackThroughBt709LimitedRange) {
+TEST(VideoWriter, PrimaryColoursComeBackThroughBt709LimitedRange) {
   const fs::path file = scratch_dir() / "colours.mp4";
   VideoSettings s = small_settings();
   s.crf = 12;
@@ -144,7 +144,7 @@ TEST(Mp4Writer, PrimaryColoursComeBackThroughBt709LimitedRange) {
   };
   const std::vector<Rgb> colours = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 255}, {0, 0, 0}, {128, 128, 128}};
   {
-    Mp4Writer writer(file, s);
+    VideoWriter writer(file, s);
     int i = 0;
     for (const Rgb& c : colours) writer.write(solid(s.width, s.height, c.r, c.g, c.b), i++);
     // Orientation: red on the top half, blue on the bottom half.
@@ -184,7 +184,7 @@ TEST(Mp4Writer, PrimaryColoursComeBackThroughBt709LimitedRange) {
   EXPECT_LT(bottom[0], 15);
 }
 
-TEST(Mp4Writer, FractionalFrameRates) {
+TEST(VideoWriter, FractionalFrameRates) {
   EXPECT_EQ(frame_rate_of(29.97).num, 30000);
   EXPECT_EQ(frame_rate_of(29.97).den, 1001);
   EXPECT_EQ(frame_rate_of(30000.0 / 1001).num, 30000);
@@ -206,7 +206,7 @@ TEST(Mp4Writer, FractionalFrameRates) {
   EXPECT_EQ(test::json_value(json, "duration", "format"), "1.001000");
 }
 
-TEST(Mp4Writer, FrameRangeMayStartAnywhereButMustBeConsecutive) {
+TEST(VideoWriter, FrameRangeMayStartAnywhereButMustBeConsecutive) {
   const fs::path dir = scratch_dir();
   const fs::path file = write_clip(dir / "range.mp4", small_settings(), 15, 100);
   const std::string json = test::ffprobe_json(file);
@@ -214,7 +214,7 @@ TEST(Mp4Writer, FrameRangeMayStartAnywhereButMustBeConsecutive) {
   EXPECT_EQ(test::json_value(json, "duration", "format"), "0.500000");
 
   VideoSettings s = small_settings();
-  Mp4Writer writer(dir / "gap.mp4", s);
+  VideoWriter writer(dir / "gap.mp4", s);
   writer.write(moving_frame(s.width, s.height, 0), 7);
   EXPECT_EQ(code_of([&] { writer.write(moving_frame(s.width, s.height, 2), 9); }), ExitCode::kInternal);
   EXPECT_EQ(code_of([&] { writer.write(moving_frame(s.width, s.height, 0), 7); }), ExitCode::kInternal);
@@ -225,13 +225,13 @@ TEST(Mp4Writer, FrameRangeMayStartAnywhereButMustBeConsecutive) {
   EXPECT_EQ(test::json_value(test::ffprobe_json(dir / "gap.mp4"), "nb_read_frames"), "2");
 }
 
-TEST(Mp4Writer, OddSizeIsRejectedWithTheNearestEvenSizes) {
+TEST(VideoWriter, OddSizeIsRejectedWithTheNearestEvenSizes) {
   const fs::path dir = scratch_dir();
   VideoSettings s;
   s.width = 1281;
   s.height = 720;
   try {
-    Mp4Writer writer(dir / "odd.mp4", s);
+    VideoWriter writer(dir / "odd.mp4", s);
     FAIL() << "odd width accepted";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::kDataError);
@@ -239,16 +239,16 @@ TEST(Mp4Writer, OddSizeIsRejectedWithTheNearestEvenSizes) {
   }
   s.width = 640;
   s.height = 479;
-  EXPECT_EQ(code_of([&] { Mp4Writer w(dir / "odd.mp4", s); }), ExitCode::kDataError);
+  EXPECT_EQ(code_of([&] { VideoWriter w(dir / "odd.mp4", s); }), ExitCode::kDataError);
   expect_only(dir, {});
 }
 
-TEST(Mp4Writer, BadSettingsAreDataErrors) {
+TEST(VideoWriter, BadSettingsAreDataErrors) {
   const fs::path dir = scratch_dir();
   auto with = [&](auto change) {
     VideoSettings s = small_settings();
     change(s);
-    return code_of([&] { Mp4Writer w(dir / "bad.mp4", s); });
+    return code_of([&] { VideoWriter w(dir / "bad.mp4", s); });
   };
   EXPECT_EQ(with([](VideoSettings& s) { s.crf = 52; }), ExitCode::kDataError);
   EXPECT_EQ(with([](VideoSettings& s) { s.crf = -1; }), ExitCode::kDataError);
@@ -260,20 +260,20 @@ TEST(Mp4Writer, BadSettingsAreDataErrors) {
   expect_only(dir, {});
 }
 
-TEST(Mp4Writer, MissingFolderCannotBeCreated) {
+TEST(VideoWriter, MissingFolderCannotBeCreated) {
   const fs::path dir = scratch_dir();
-  EXPECT_EQ(code_of([&] { Mp4Writer w(dir / "no" / "such" / "clip.mp4", small_settings()); }),
+  EXPECT_EQ(code_of([&] { VideoWriter w(dir / "no" / "such" / "clip.mp4", small_settings()); }),
             ExitCode::kCannotCreate);
 }
 
-TEST(Mp4Writer, DestroyedWithoutFinishLeavesEarlierOutputUntouched) {
+TEST(VideoWriter, DestroyedWithoutFinishLeavesEarlierOutputUntouched) {
   const fs::path dir = scratch_dir();
   const fs::path file = dir / "clip.mp4";
   const std::string earlier = "earlier output, not an MP4\n";
   test::write_bytes(file, earlier);
   {
     const VideoSettings s = small_settings();
-    Mp4Writer writer(file, s);
+    VideoWriter writer(file, s);
     for (int i = 0; i < 10; ++i) writer.write(moving_frame(s.width, s.height, i), i);
     int partial = 0;  // The temporary exists while writing; the target is still the old file.
     for (const auto& entry : fs::directory_iterator(dir)) {
@@ -286,18 +286,18 @@ TEST(Mp4Writer, DestroyedWithoutFinishLeavesEarlierOutputUntouched) {
   expect_only(dir, {"clip.mp4"});
 
   const fs::path fresh = dir / "fresh.mp4";
-  { Mp4Writer writer(fresh, small_settings()); }
+  { VideoWriter writer(fresh, small_settings()); }
   EXPECT_FALSE(fs::exists(fresh));
   expect_only(dir, {"clip.mp4"});
   // No frames: finish refuses, and nothing appears.
   {
-    Mp4Writer writer(fresh, small_settings());
+    VideoWriter writer(fresh, small_settings());
     EXPECT_EQ(code_of([&] { writer.finish(); }), ExitCode::kInternal);
   }
   expect_only(dir, {"clip.mp4"});
 }
 
-TEST(Mp4Writer, FinishReplacesEarlierOutput) {
+TEST(VideoWriter, FinishReplacesEarlierOutput) {
   const fs::path dir = scratch_dir();
   const fs::path file = dir / "clip.mp4";
   test::write_bytes(file, "old");
@@ -308,42 +308,11 @@ TEST(Mp4Writer, FinishReplacesEarlierOutput) {
 
 // Not a test: prints ms/frame for 720p. Run with
 //   test_encode --gtest_also_run_disabled_tests --gtest_filter='*Speed*'
-Image organ_frame(int width, int height, int index) {
-  // A shaded, pulsing blob on a dark vignette with a little texture: like a rendered organ.
-  Image image(width, height);
-  const double phase = 2 * M_PI * index / 30.0;
-  const double cx = width * (0.5 + 0.05 * std::sin(phase * 0.5)), cy = height * 0.5;
-  const double radius = height * (0.33 + 0.03 * std::sin(phase));
-  for (int y = 0; y < height; ++y) {
-    std::uint8_t* row = image.row(y);
-    for (int x = 0; x < width; ++x) {
-      const double dx = (x - cx) / radius, dy = (y - cy) / (radius * 1.2);
-      const double d2 = dx * dx + dy * dy;
-      const double vignette = 40 * (1 - 0.5 * ((x - width / 2.0) * (x - width / 2.0) + (y - height / 2.0) * (y - height / 2.0)) /
-                                            (width * width / 4.0));
-      double r = vignette * 0.6, g = vignette * 0.7, b = vignette;
-      if (d2 < 1) {
-        const double nz = std::sqrt(1 - d2);
-        const double diffuse = std::max(0.0, -0.4 * dx - 0.5 * dy + 0.77 * nz);
-        const double spec = std::pow(std::max(0.0, 0.3 * -dx + 0.3 * -dy + 0.9 * nz), 40);
-        const double vein = 0.5 + 0.5 * std::sin(dx * 23 + std::sin(dy * 7 + phase) * 3);
-        r = 40 + 170 * diffuse * (0.9 + 0.1 * vein) + 200 * spec;
-        g = 15 + 60 * diffuse * (0.8 + 0.2 * vein) + 200 * spec;
-        b = 20 + 55 * diffuse + 200 * spec;
-      }
-      row[3 * x + 0] = static_cast<std::uint8_t>(std::min(255.0, r));
-      row[3 * x + 1] = static_cast<std::uint8_t>(std::min(255.0, g));
-      row[3 * x + 2] = static_cast<std::uint8_t>(std::min(255.0, b));
-    }
-  }
-  return image;
-}
-
-TEST(Mp4WriterSpeed, DISABLED_Encode720p) {
+TEST(VideoWriterSpeed, DISABLED_Encode720p) {
   const fs::path dir = scratch_dir();
   constexpr int kUnique = 60, kFrames = 240;
   std::vector<Image> frames;
-  for (int i = 0; i < kUnique; ++i) frames.push_back(organ_frame(1280, 720, i));
+  for (int i = 0; i < kUnique; ++i) frames.push_back(test::organ_frame(1280, 720, i));
   for (const char* preset : {"veryfast", "ultrafast", "superfast", "medium"}) {
     VideoSettings s;
     s.preset = preset;
@@ -353,7 +322,7 @@ TEST(Mp4WriterSpeed, DISABLED_Encode720p) {
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpu_start = std::clock();  // All threads: less sensitive to a busy machine.
     {
-      Mp4Writer writer(file, s);
+      VideoWriter writer(file, s);
       for (int i = 0; i < kFrames; ++i) {
         const int k = i % (2 * kUnique);  // Forward then backward: continuous motion.
         writer.write(frames[k < kUnique ? k : 2 * kUnique - 1 - k], i);
