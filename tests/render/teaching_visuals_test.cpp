@@ -227,7 +227,7 @@ TEST(ColorMap, DivergingEndsAndMiddle) {
 TEST(ColorMap, OrganMapsAndLegends) {
   scene::Organ organ;
   organ.regions.resize(9);
-  for (std::size_t r = 0; r < organ.regions.size(); ++r) organ.regions[r].name = "r" + std::to_string(r);
+  for (std::size_t r = 0; r < organ.regions.size(); ++r) organ.regions[r].name = std::string(1, static_cast<char>('a' + r));
   organ.regions[1].has_color = true;
   organ.regions[1].color = scene::Color(0.1, 0.2, 0.3);
   EXPECT_FALSE(organ_color_map(organ).has);
