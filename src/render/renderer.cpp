@@ -682,15 +682,44 @@ void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene:
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   for (const PreparedView& p : prepared) draw_view(p, false);
 
-  bool any_transparent = false;
+  // The pixels the transparent parts can touch: the union over views of their boxes'
+  // projections (the whole view when a box reaches behind the eye), in GL pixels. The
+  // OIT clear, accumulation and composite are scissored to it: llvmpipe pays per pixel.
+  int x0 = r.width, y0 = r.height, x1 = 0, y1 = 0;
   for (const PreparedView& p : prepared) {
-    const auto transparent = [&](const Surface& s) { return s.uploaded && s.min_opacity < kOpaqueFrom; };
+    const auto include = [&](const Surface& s) {
+      if (!s.uploaded || !(s.min_opacity < kOpaqueFrom)) return;
+      double lo_x = 1, lo_y = 1, hi_x = -1, hi_y = -1;  // NDC
+      bool behind = false;
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d c((corner & 1) ? s.box_max.x() : s.box_min.x(), (corner & 2) ? s.box_max.y() : s.box_min.y(),
+                                (corner & 4) ? s.box_max.z() : s.box_min.z());
+        const Eigen::Vector4d clip = p.view_projection.cast<double>() * c.homogeneous();
+        if (!(clip.w() > 1e-9)) {
+          behind = true;
+          break;
+        }
+        lo_x = std::min(lo_x, clip.x() / clip.w());
+        hi_x = std::max(hi_x, clip.x() / clip.w());
+        lo_y = std::min(lo_y, clip.y() / clip.w());
+        hi_y = std::max(hi_y, clip.y() / clip.w());
+      }
+      if (behind) lo_x = lo_y = -1, hi_x = hi_y = 1;
+      lo_x = std::max(lo_x, -1.0), lo_y = std::max(lo_y, -1.0), hi_x = std::min(hi_x, 1.0), hi_y = std::min(hi_y, 1.0);
+      if (lo_x > hi_x || lo_y > hi_y) return;  // Off screen.
+      // One pixel of margin for rasterization at the edges.
+      x0 = std::min(x0, p.x + std::max(0, static_cast<int>(std::floor((lo_x + 1) / 2 * p.width)) - 1));
+      y0 = std::min(y0, p.y + std::max(0, static_cast<int>(std::floor((lo_y + 1) / 2 * p.height)) - 1));
+      x1 = std::max(x1, p.x + std::min(p.width, static_cast<int>(std::ceil((hi_x + 1) / 2 * p.width)) + 1));
+      y1 = std::max(y1, p.y + std::min(p.height, static_cast<int>(std::ceil((hi_y + 1) / 2 * p.height)) + 1));
+    };
     if (p.source->surfaces.empty()) {
-      for (const Surface& s : r.surfaces) any_transparent |= transparent(s);
+      for (const Surface& s : r.surfaces) include(s);
     } else {
-      for (const int id : p.source->surfaces) any_transparent |= transparent(r.surfaces[static_cast<std::size_t>(id)]);
+      for (const int id : p.source->surfaces) include(r.surfaces[static_cast<std::size_t>(id)]);
     }
   }
+  const bool any_transparent = x1 > x0 && y1 > y0;
   r.frame_resolved = false;
   if (any_transparent) {
     // Weighted blended OIT: accumulate every transparent part against the opaque depth
@@ -700,6 +729,8 @@ void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene:
     }
     glBindFramebuffer(GL_FRAMEBUFFER, r.oit.fbo);
     glViewport(0, 0, r.width, r.height);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x0, y0, x1 - x0, y1 - y0);
     const float zero[] = {0, 0, 0, 0};
     const float one[] = {1, 1, 1, 1};
     glClearBufferfv(GL_COLOR, 0, zero);
@@ -710,6 +741,7 @@ void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene:
     glBlendFunci(1, GL_ZERO, GL_ONE_MINUS_SRC_COLOR);
     for (const PreparedView& p : prepared) draw_view(p, true);
     glDepthMask(GL_TRUE);
+    glDisable(GL_SCISSOR_TEST);  // Blits are scissored too: the opaque resolve needs every pixel.
 
     if (r.samples > 0) {  // Resolve the opaque frame and both OIT targets, then composite.
       glBindFramebuffer(GL_READ_FRAMEBUFFER, r.multisampled.fbo);
@@ -728,6 +760,7 @@ void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene:
       r.frame_resolved = true;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, r.resolved.fbo);
+    glEnable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glUseProgram(r.oit.composite_program);
@@ -739,6 +772,7 @@ void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene:
     glBindVertexArray(r.oit.empty_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
     glEnable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, r.draw_fbo());
   }
