@@ -1,5 +1,6 @@
 #include "app/render_clip.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
