@@ -50,6 +50,7 @@ struct SurfaceBuffers {
   std::vector<float> positions, normals;  ///< xyz per vertex. unit: m, 1
   std::vector<float> colors;        ///< sRGB per vertex, for colour maps that change (strain, activation).
   std::vector<double> values;       ///< The mapped value per vertex. unit: 1
+  std::vector<double> region_phi;   ///< Activation per region this frame. unit: 1
 };
 
 /// An organ coloured by a value that changes every frame.
@@ -66,15 +67,16 @@ void map_colors(const DynamicColors& dynamic, const OrganBody& body, const scene
     dynamic.strain->compute(buf.mesh_positions, buf.values);
   } else {
     // Activation phi(t) of each vertex's region; 0 for the undriven body.
+    static const std::vector<double> kRegular;
     const auto& beats = body.model.beat_boundaries;
     const std::vector<int>& vertex_region = body.geometry.vertex_region;
-    buf.values.assign(vertex_region.size(), 0.0);
+    buf.region_phi.resize(organ.regions.size());
     for (std::size_t r = 0; r < organ.regions.size(); ++r) {
-      const double phi = sim::activation(organ.regions[r].drive, t_s, body.model.ramp_s,
-                                         r < beats.size() ? beats[r] : std::vector<double>{});
-      for (std::size_t v = 0; v < vertex_region.size(); ++v) {
-        if (vertex_region[v] == static_cast<int>(r)) buf.values[v] = phi;
-      }
+      buf.region_phi[r] = sim::activation(organ.regions[r].drive, t_s, body.model.ramp_s, r < beats.size() ? beats[r] : kRegular);
+    }
+    buf.values.resize(vertex_region.size());
+    for (std::size_t v = 0; v < vertex_region.size(); ++v) {
+      buf.values[v] = vertex_region[v] >= 0 ? buf.region_phi[static_cast<std::size_t>(vertex_region[v])] : 0.0;
     }
   }
   for (std::size_t v = 0; v < buf.values.size(); ++v) {

@@ -278,6 +278,15 @@ struct OitTargets {
   }
 };
 
+/// What draw() computes once per view.
+struct PreparedView {
+  Eigen::Matrix4f view_projection;
+  Eigen::Vector3f eye, up;
+  GLint x = 0, y = 0;  ///< GL viewport: bottom-left origin. unit: px
+  GLsizei width = 0, height = 0;
+  const ViewDraw* source = nullptr;
+};
+
 struct Surface {
   GLuint vao = 0;
   GLuint positions = 0;  ///< float xyz per vertex, rewritten every frame.
@@ -311,6 +320,7 @@ struct Renderer::Impl {
   std::array<std::array<OrganProgram, kVariantCount>, kMaxLights + 1> programs{};
   std::vector<Surface> surfaces;
   OitTargets oit;                             ///< Made on the first transparent frame.
+  std::vector<PreparedView> prepared;         ///< draw()'s per-view set-up, kept to avoid allocating per frame.
   bool frame_resolved = false;                ///< MSAA: draw() already resolved into `resolved`.
 
   OrganProgram& program(int light_count, int variant) {
@@ -547,19 +557,6 @@ void Renderer::draw(const scene::Camera& camera, const std::vector<scene::Light>
   draw(std::vector<ViewDraw>{whole}, lights, background);
 }
 
-namespace {
-
-/// What draw() computes once per view.
-struct PreparedView {
-  Eigen::Matrix4f view_projection;
-  Eigen::Vector3f eye, up;
-  GLint x = 0, y = 0;  ///< GL viewport: bottom-left origin. unit: px
-  GLsizei width = 0, height = 0;
-  const ViewDraw* source = nullptr;
-};
-
-}  // namespace
-
 void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene::Light>& lights,
                     const scene::Color& background) {
   Impl& r = *impl_;
@@ -568,8 +565,8 @@ void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene:
                                           " lights are supported, the scene has " +
                                           std::to_string(lights.size()));
   }
-  std::vector<PreparedView> prepared;
-  prepared.reserve(views.size());
+  std::vector<PreparedView>& prepared = r.prepared;
+  prepared.clear();
   for (const ViewDraw& v : views) {
     PreparedView p;
     p.source = &v;
