@@ -29,7 +29,38 @@ uniform vec3 u_ground;                        // linear RGB ambient from below
 uniform float u_specular;                     // highlight strength, unit: 1
 uniform float u_shininess;                    // Blinn-Phong exponent, unit: 1
 
+#ifdef WITH_OPACITY
+in float v_opacity;
+// A fragment belongs to the opaque pass from this opacity up, to the transparent one below.
+const float kOpaqueFrom = 0.999;
+#endif
+#ifdef CLIP
+uniform vec3 u_cut_color;  // sRGB: the inside seen through the cut
+const float kCutShade = 0.45;  // how much the inside darkens where it turns from the eye, unit: 1
+#endif
+
+#ifdef TRANSPARENT_PART
+// Weighted blended order-independent transparency (McGuire & Bavoil, JCGT 2(2), 2013):
+// every transparent fragment adds its premultiplied colour times a depth weight into
+// accumulation, and multiplies revealage by (1 - alpha); a composite pass divides.
+layout(location = 0) out vec4 accumulation;
+layout(location = 1) out float revealage;
+#else
 out vec4 frag_color;
+#endif
+
+// Writes the sRGB colour: plainly in the opaque passes, weighted in the transparent one.
+void emit(vec3 srgb) {
+#ifdef TRANSPARENT_PART
+  float a = v_opacity;
+  // The paper's equation (9)-style weight on window depth: nearer layers count more.
+  float w = clamp(pow(min(1.0, a * 10.0) + 0.01, 3.0) * 1e8 * pow(1.0 - gl_FragCoord.z * 0.9, 3.0), 1e-2, 3e3);
+  accumulation = vec4(srgb * a, a) * w;
+  revealage = a;
+#else
+  frag_color = vec4(srgb, 1.0);
+#endif
+}
 
 vec3 linear_to_srgb(vec3 c) {
   c = clamp(c, 0.0, 1.0);
@@ -39,6 +70,21 @@ vec3 linear_to_srgb(vec3 c) {
 }
 
 void main() {
+#ifdef OPAQUE_PART
+  if (v_opacity < kOpaqueFrom) discard;
+#endif
+#ifdef TRANSPARENT_PART
+  if (v_opacity >= kOpaqueFrom) discard;
+#endif
+#ifdef CLIP
+  // Back faces show only where the plane opened the surface: the inside, in the cut colour,
+  // shaded by a headlight (full colour where the wall faces the eye) so cavities read in depth.
+  if (!gl_FrontFacing) {
+    float facing = max(dot(-normalize(v_normal), normalize(u_camera_position - v_position)), 0.0);
+    emit(u_cut_color * (1.0 - kCutShade + kCutShade * facing));
+    return;
+  }
+#endif
   vec3 n = normalize(v_normal);
   vec3 v = normalize(u_camera_position - v_position);
   vec3 albedo = v_albedo;
@@ -69,5 +115,5 @@ void main() {
   float rim = grazing2 * grazing2;
   color += kRim * rim * mix(u_sky, vec3(1.0), 0.5) * (0.5 + 0.5 * hue);
 
-  frag_color = vec4(linear_to_srgb(color), 1.0);
+  emit(linear_to_srgb(color));
 }

@@ -6,6 +6,17 @@ layout(location = 0) in vec3 a_position;  // world space, metres
 layout(location = 1) in vec3 a_normal;    // world space, unit length
 layout(location = 2) in vec3 a_color;     // sRGB in [0, 1] (region or material colour)
 
+// Variants, defined by the renderer: CLIP (a cutting plane), and WITH_OPACITY for the passes
+// that split a surface by opacity (OPAQUE_PART, TRANSPARENT_PART). The plain variant is the
+// opaque organ as before, so its pixels do not change.
+#ifdef WITH_OPACITY
+layout(location = 3) in float a_opacity;  // unit: 1, in [0, 1]
+out float v_opacity;
+#endif
+#ifdef CLIP
+uniform vec4 u_clip_plane;  // (normal, -dot(normal, point)): kept where >= 0, world space
+#endif
+
 uniform mat4 u_view_projection;
 
 out vec3 v_position;  // world space
@@ -25,4 +36,10 @@ void main() {
   v_normal = a_normal;
   v_albedo = srgb_to_linear(clamp(a_color, 0.0, 1.0));
   gl_Position = u_view_projection * vec4(a_position, 1.0);
+#ifdef WITH_OPACITY
+  v_opacity = a_opacity;
+#endif
+#ifdef CLIP
+  gl_ClipDistance[0] = dot(u_clip_plane.xyz, a_position) + u_clip_plane.w;
+#endif
 }

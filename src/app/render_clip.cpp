@@ -1,5 +1,6 @@
 #include "app/render_clip.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "app/bake.h"
+#include "app/camera_motion.h"
 #include "app/cards.h"
 #include "app/frame_list.h"
 #include "app/frame_pipeline.h"
@@ -18,8 +20,11 @@
 #include "encode/video_writer.h"
 #include "encode/png.h"
 #include "mesh/normals.h"
+#include "mesh/strain.h"
+#include "render/color_map.h"
 #include "render/fxaa.h"
 #include "render/renderer.h"
+#include "sim/drive.h"
 
 namespace systole::app {
 namespace {
@@ -28,20 +33,58 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-std::vector<scene::Color> vertex_colors(const scene::Organ& organ, const std::vector<int>& vertex_region) {
-  std::vector<scene::Color> colors(vertex_region.size(), organ.material.color);
+/// Per vertex: its region's opacity, else the material's; empty when all are the material's.
+std::vector<double> vertex_opacity(const scene::Organ& organ, const std::vector<int>& vertex_region) {
+  const bool any = std::any_of(organ.regions.begin(), organ.regions.end(), [](const scene::Region& r) { return r.has_opacity; });
+  if (!any) return {};
+  std::vector<double> opacity(vertex_region.size(), organ.material.opacity);
   for (std::size_t i = 0; i < vertex_region.size(); ++i) {
     const int r = vertex_region[i];
-    if (r >= 0 && organ.regions[r].has_color) colors[i] = organ.regions[r].color;
+    if (r >= 0 && organ.regions[static_cast<std::size_t>(r)].has_opacity) opacity[i] = organ.regions[static_cast<std::size_t>(r)].opacity;
   }
-  return colors;
+  return opacity;
 }
 
 /// One organ's surface for one frame, as the renderer takes it (allocated once per slot).
 struct SurfaceBuffers {
   Eigen::Matrix3Xd mesh_positions;  ///< The render mesh's vertices this frame (render_positions). unit: m
   std::vector<float> positions, normals;  ///< xyz per vertex. unit: m, 1
+  std::vector<float> colors;        ///< sRGB per vertex, for colour maps that change (strain, activation).
+  std::vector<double> values;       ///< The mapped value per vertex. unit: 1
+  std::vector<double> region_phi;   ///< Activation per region this frame. unit: 1
 };
+
+/// An organ coloured by a value that changes every frame.
+struct DynamicColors {
+  render::ColorMap map;
+  scene::ColorBy by = scene::ColorBy::kStrain;
+  std::optional<mesh::VertexStrain> strain;  ///< kStrain: the mesh's edges at rest.
+};
+
+/// Fills buf.colors from the organ's colour map at time t_s (unit: s).
+void map_colors(const DynamicColors& dynamic, const OrganBody& body, const scene::Organ& organ, double t_s,
+                SurfaceBuffers& buf) {
+  if (dynamic.by == scene::ColorBy::kStrain) {
+    dynamic.strain->compute(buf.mesh_positions, buf.values);
+  } else {
+    // Activation phi(t) of each vertex's region; 0 for the undriven body.
+    static const std::vector<double> kRegular;
+    const auto& beats = body.model.beat_boundaries;
+    const std::vector<int>& vertex_region = body.geometry.vertex_region;
+    buf.region_phi.resize(organ.regions.size());
+    for (std::size_t r = 0; r < organ.regions.size(); ++r) {
+      buf.region_phi[r] = sim::activation(organ.regions[r].drive, t_s, body.model.ramp_s, r < beats.size() ? beats[r] : kRegular);
+    }
+    buf.values.resize(vertex_region.size());
+    for (std::size_t v = 0; v < vertex_region.size(); ++v) {
+      buf.values[v] = vertex_region[v] >= 0 ? buf.region_phi[static_cast<std::size_t>(vertex_region[v])] : 0.0;
+    }
+  }
+  for (std::size_t v = 0; v < buf.values.size(); ++v) {
+    const scene::Color c = dynamic.map.at(buf.values[v]);
+    for (int k = 0; k < 3; ++k) buf.colors[3 * v + k] = static_cast<float>(c[k]);
+  }
+}
 
 /// Frames in flight between two stages. Three: one being written, one being read, and one
 /// ready, so a stage that is briefly slower does not stall the other.
@@ -113,6 +156,37 @@ encode::VideoFormat video_format(const scene::Scene& scene, const std::filesyste
   return encode_format(scene.output.format);
 }
 
+std::vector<render::ViewDraw> frame_views(const scene::Scene& scene, const std::vector<int>& surface_ids) {
+  std::vector<render::ViewDraw> views;
+  if (scene.views.empty()) {
+    views.emplace_back();  // The whole frame, every surface, no cut.
+    views.back().camera = scene.camera;
+    return views;
+  }
+  const auto rects = scene::view_rectangles(scene.output.width, scene.output.height, static_cast<int>(scene.views.size()));
+  for (std::size_t v = 0; v < scene.views.size(); ++v) {
+    const scene::View& view = scene.views[v];
+    render::ViewDraw draw;
+    draw.camera = view.has_camera ? view.camera : scene.camera;
+    draw.rect = rects[v];
+    draw.clip = view.clip;
+    for (const std::string& name : view.organs) {
+      for (std::size_t o = 0; o < scene.organs.size(); ++o) {
+        if (scene.organs[o].name == name) draw.surfaces.push_back(surface_ids[o]);
+      }
+    }
+    views.push_back(draw);
+  }
+  return views;
+}
+
+void set_view_cameras(const scene::Scene& scene, double t_s, std::vector<render::ViewDraw>& views) {
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const bool own = v < scene.views.size() && scene.views[v].has_camera;
+    views[v].camera = camera_at(own ? scene.views[v].camera : scene.camera, t_s);
+  }
+}
+
 std::filesystem::path default_video_path(const scene::Scene& scene) {
   if (!scene.output.file.empty()) return scene.output.file;
   return std::filesystem::path("out") / (scene.name + "." + encode::extension_of(encode_format(scene.output.format)));
@@ -136,16 +210,29 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
   // slots[k][o]: organ o of the frame in slot k.
   std::vector<std::vector<SurfaceBuffers>> slots(kPipelineDepth, std::vector<SurfaceBuffers>(world.organs.size()));
   std::vector<int> surface_ids;
+  std::vector<std::optional<DynamicColors>> dynamic(world.organs.size());
   for (std::size_t o = 0; o < world.organs.size(); ++o) {
     const auto& body = world.organs[o];
     const auto& organ = scene.organs[o];
-    surface_ids.push_back(renderer.add_surface(body.geometry.mesh.surface.triangles,
-                                               vertex_colors(organ, body.geometry.vertex_region), organ.material));
+    const auto& surface = body.geometry.mesh.surface;
+    surface_ids.push_back(renderer.add_surface(surface.triangles,
+                                               render::static_vertex_colors(organ, body.geometry.vertex_region),
+                                               organ.material, vertex_opacity(organ, body.geometry.vertex_region)));
+    if (organ.clip.enabled) renderer.set_clip(surface_ids.back(), organ.clip);
+    if (const render::OrganColorMap map = render::organ_color_map(organ); map.has) {
+      dynamic[o].emplace();
+      dynamic[o]->map = map.map;
+      dynamic[o]->by = organ.color_by;
+      if (organ.color_by == scene::ColorBy::kStrain) dynamic[o]->strain.emplace(surface.positions, surface.triangles);
+    }
     for (auto& slot : slots) {
-      slot[o].positions.resize(3 * body.geometry.mesh.surface.positions.size());
-      slot[o].normals.resize(3 * body.geometry.mesh.surface.positions.size());
+      slot[o].positions.resize(3 * surface.positions.size());
+      slot[o].normals.resize(3 * surface.positions.size());
+      if (dynamic[o]) slot[o].colors.resize(3 * surface.positions.size());
     }
   }
+  // The views: each a rectangle with its organs' surfaces; the render stage moves their cameras.
+  std::vector<render::ViewDraw> views = frame_views(scene, surface_ids);
 
   // Sinks are opened before the first frame so a bad output path fails before any work.
   std::unique_ptr<encode::FrameSink> video, png;
@@ -184,16 +271,20 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
       for (Eigen::Index k = 0; k < 3 * n; ++k) buf.positions[k] = static_cast<float>(x[k]);
       mesh::vertex_normals(x, static_cast<int>(n), world.organs[o].geometry.mesh.surface.triangles,
                            buf.normals.data());
+      if (dynamic[o]) map_colors(*dynamic[o], world.organs[o], scene.organs[o], f / out.fps, buf);
     }
     times.simulate_s += seconds_since(t0);
   };
-  stages.render = [&](int, int slot) {
+  stages.render = [&](int i, int slot) {
     auto t0 = Clock::now();
     for (std::size_t o = 0; o < surface_ids.size(); ++o) {
       const auto& buf = slots[static_cast<std::size_t>(slot)][o];
       renderer.update_surface(surface_ids[o], buf.positions.data(), buf.normals.data());
+      if (dynamic[o]) renderer.update_colors(surface_ids[o], buf.colors.data());
     }
-    renderer.draw(scene.camera, scene.lights, out.background);
+    const double t_s = frames[static_cast<std::size_t>(i)] / out.fps;
+    set_view_cameras(scene, t_s, views);
+    renderer.draw(views, scene.lights, out.background);
     times.render_s += seconds_since(t0);
     t0 = Clock::now();
     renderer.read_frame(images[static_cast<std::size_t>(slot)]);

@@ -9,6 +9,7 @@
 #include "app/limits.h"
 #include "app/progress.h"
 #include "encode/video_writer.h"
+#include "render/renderer.h"
 #include "scene/scene.h"
 
 namespace systole::app {
@@ -54,6 +55,14 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request);
 
 /// "simulate 1.2 ms/frame, render ..." for the end-of-run summary.
 std::string describe(const StageTimes& times);
+
+/// The frame's views: one whole-frame view of every surface when the scene has no
+/// `views`, else each view in its rectangle (scene::view_rectangles) with the surfaces of its
+/// organs (surface_ids[o] is organ o's) and its clip. Cameras are set by set_view_cameras.
+std::vector<render::ViewDraw> frame_views(const scene::Scene& scene, const std::vector<int>& surface_ids);
+
+/// Puts every view's camera (its own, else the scene's) where it is at time t_s (unit: s).
+void set_view_cameras(const scene::Scene& scene, double t_s, std::vector<render::ViewDraw>& views);
 
 /// The default video path for a scene: the scene's output.file, else out/<name>.<ext>, the
 /// extension of output.format (.mp4 unless the scene asks for another).

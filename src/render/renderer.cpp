@@ -25,6 +25,15 @@ namespace {
 constexpr GLuint kPositionAttrib = 0;
 constexpr GLuint kNormalAttrib = 1;
 constexpr GLuint kColorAttrib = 2;
+constexpr GLuint kOpacityAttrib = 3;
+
+/// Organ program variants (shaders/organ.*.glsl), as bits.
+constexpr int kClipVariant = 1;         ///< CLIP: a cutting plane, back faces in the cut colour.
+constexpr int kOpaquePartVariant = 2;   ///< OPAQUE_PART: drops the fragments below kOpaqueFrom.
+constexpr int kTransparentPartVariant = 4;  ///< TRANSPARENT_PART: the OIT accumulation pass.
+constexpr int kVariantCount = 8;
+/// As kOpaqueFrom in organ.frag.glsl: a surface part is opaque from this opacity up.
+constexpr float kOpaqueFrom = 0.999f;
 
 // Hemisphere ambient, linear RGB: a cool sky and a warm bounce from below (the body cavity).
 const Eigen::Vector3f kSkyAmbient(0.09f, 0.10f, 0.11f);
@@ -117,8 +126,17 @@ GLuint link_program(std::string_view vertex_name, std::string_view fragment_name
 
 GLint uniform(GLuint program, const char* name) {
   const GLint location = glGetUniformLocation(program, name);
-  if (location < 0) fail(std::string("uniform ") + name + " not found in the organ shader");
+  if (location < 0) fail(std::string("uniform ") + name + " not found in its shader");
   return location;
+}
+
+std::string variant_defines(int light_count, int variant) {
+  std::string d = "#define LIGHT_COUNT " + std::to_string(light_count) + "\n";
+  if (variant & kClipVariant) d += "#define CLIP 1\n";
+  if (variant & (kOpaquePartVariant | kTransparentPartVariant)) d += "#define WITH_OPACITY 1\n";
+  if (variant & kOpaquePartVariant) d += "#define OPAQUE_PART 1\n";
+  if (variant & kTransparentPartVariant) d += "#define TRANSPARENT_PART 1\n";
+  return d;
 }
 
 /// The organ shader compiled for one light count. The count is a compile-time constant
@@ -128,11 +146,15 @@ struct OrganProgram {
   GLuint id = 0;
   struct {
     GLint view_projection, camera_position, light_to_light, light_radiance, up, specular, shininess;
+    GLint clip_plane = -1, cut_color = -1;  ///< CLIP variants only.
   } loc{};
 
-  void create(int light_count) {
-    id = link_program("organ.vert.glsl", "organ.frag.glsl",
-                      "#define LIGHT_COUNT " + std::to_string(light_count) + "\n");
+  void create(int light_count, int variant) {
+    id = link_program("organ.vert.glsl", "organ.frag.glsl", variant_defines(light_count, variant));
+    if (variant & kClipVariant) {
+      loc.clip_plane = uniform(id, "u_clip_plane");
+      loc.cut_color = uniform(id, "u_cut_color");
+    }
     loc.view_projection = uniform(id, "u_view_projection");
     loc.camera_position = uniform(id, "u_camera_position");
     loc.up = uniform(id, "u_up");
@@ -182,16 +204,103 @@ struct Framebuffer {
   }
 };
 
+/// The weighted blended OIT targets, made on the first frame with a transparent part:
+/// accumulation RGBA16F and revealage R16F, sharing the opaque pass's depth buffer (tested,
+/// not written). With MSAA they are multisampled renderbuffers resolved into the textures.
+struct OitTargets {
+  GLuint fbo = 0;               ///< Drawn into by the transparent pass.
+  GLuint accumulation_rb = 0, revealage_rb = 0;  ///< MSAA only.
+  GLuint texture_fbo = 0;       ///< MSAA only: the resolve destination.
+  GLuint accumulation = 0, revealage = 0;        ///< Textures the composite reads.
+  GLuint composite_program = 0;
+  GLuint empty_vao = 0;         ///< The composite's full-screen triangle has no attributes.
+
+  void create(int width, int height, int samples, GLuint depth_renderbuffer) {
+    const auto texture = [&](GLuint& id, GLenum format) {
+      glGenTextures(1, &id);
+      glBindTexture(GL_TEXTURE_2D, id);
+      glTexStorage2D(GL_TEXTURE_2D, 1, format, width, height);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    };
+    texture(accumulation, GL_RGBA16F);
+    texture(revealage, GL_R16F);
+    const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    if (samples > 0) {
+      const auto renderbuffer = [&](GLuint& id, GLenum format) {
+        glGenRenderbuffers(1, &id);
+        glBindRenderbuffer(GL_RENDERBUFFER, id);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+      };
+      renderbuffer(accumulation_rb, GL_RGBA16F);
+      renderbuffer(revealage_rb, GL_R16F);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, accumulation_rb);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, revealage_rb);
+    } else {
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, accumulation, 0);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, revealage, 0);
+    }
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_renderbuffer);
+    glDrawBuffers(2, both);
+    check_complete("OIT accumulation");
+    if (samples > 0) {
+      glGenFramebuffers(1, &texture_fbo);
+      glBindFramebuffer(GL_FRAMEBUFFER, texture_fbo);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, accumulation, 0);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, revealage, 0);
+      glDrawBuffers(2, both);
+      check_complete("OIT resolve");
+    }
+    composite_program = link_program("oit_composite.vert.glsl", "oit_composite.frag.glsl", "");
+    glUseProgram(composite_program);
+    glUniform1i(uniform(composite_program, "u_accumulation"), 0);
+    glUniform1i(uniform(composite_program, "u_revealage"), 1);
+    glGenVertexArrays(1, &empty_vao);
+  }
+
+  static void check_complete(const char* what) {
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) fail(std::string(what) + " framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+  }
+
+  void destroy() noexcept {
+    if (empty_vao) glDeleteVertexArrays(1, &empty_vao);
+    if (composite_program) glDeleteProgram(composite_program);
+    const GLuint framebuffers[] = {fbo, texture_fbo};
+    glDeleteFramebuffers(2, framebuffers);
+    const GLuint renderbuffers[] = {accumulation_rb, revealage_rb};
+    glDeleteRenderbuffers(2, renderbuffers);
+    const GLuint textures[] = {accumulation, revealage};
+    glDeleteTextures(2, textures);
+    *this = OitTargets{};
+  }
+};
+
+/// What draw() computes once per view.
+struct PreparedView {
+  Eigen::Matrix4f view_projection;
+  Eigen::Vector3f eye, up;
+  GLint x = 0, y = 0;  ///< GL viewport: bottom-left origin. unit: px
+  GLsizei width = 0, height = 0;
+  const ViewDraw* source = nullptr;
+};
+
 struct Surface {
   GLuint vao = 0;
   GLuint positions = 0;  ///< float xyz per vertex, rewritten every frame.
   GLuint normals = 0;    ///< float xyz per vertex, rewritten every frame.
-  GLuint colors = 0;     ///< float sRGB per vertex, static.
+  GLuint colors = 0;     ///< float sRGB per vertex (update_colors rewrites it).
+  GLuint opacity = 0;    ///< float per vertex, static.
   GLuint indices = 0;    ///< uint32 x 3 per triangle, static.
   GLsizei index_count = 0;
   std::size_t vertex_count = 0;
   float specular = 0;
   float shininess = 1;
+  float min_opacity = 1;  ///< Below kOpaqueFrom: a part goes through the transparent pass.
+  float max_opacity = 1;  ///< From kOpaqueFrom: a part goes through the opaque pass.
+  scene::ClipPlane clip;  ///< The surface's own cut (set_clip).
   bool uploaded = false;         ///< update_surface has given it positions.
   Eigen::Vector3d box_min = Eigen::Vector3d::Zero();  ///< Bounds of the last upload. unit: m
   Eigen::Vector3d box_max = Eigen::Vector3d::Zero();
@@ -208,8 +317,17 @@ struct Renderer::Impl {
   Framebuffer multisampled;                   ///< Drawn into when samples > 0.
   Framebuffer resolved;                       ///< Read back; drawn into directly when samples == 0.
   /// Index: light count; linked on first use, so at most once per count.
-  std::array<OrganProgram, kMaxLights + 1> programs{};
+  std::array<std::array<OrganProgram, kVariantCount>, kMaxLights + 1> programs{};
   std::vector<Surface> surfaces;
+  OitTargets oit;                             ///< Made on the first transparent frame.
+  std::vector<PreparedView> prepared;         ///< draw()'s per-view set-up, kept to avoid allocating per frame.
+  bool frame_resolved = false;                ///< MSAA: draw() already resolved into `resolved`.
+
+  OrganProgram& program(int light_count, int variant) {
+    OrganProgram& p = programs[static_cast<std::size_t>(light_count)][static_cast<std::size_t>(variant)];
+    if (!p.id) p.create(light_count, variant);
+    return p;
+  }
 
   void make_current() const {
     if (OSMesaGetCurrentContext() == context) return;
@@ -234,14 +352,17 @@ struct Renderer::Impl {
 
   void release_gl_objects() noexcept {
     for (Surface& s : surfaces) {
-      const GLuint buffers[] = {s.positions, s.normals, s.colors, s.indices};
-      glDeleteBuffers(4, buffers);
+      const GLuint buffers[] = {s.positions, s.normals, s.colors, s.opacity, s.indices};
+      glDeleteBuffers(5, buffers);
       glDeleteVertexArrays(1, &s.vao);
     }
     surfaces.clear();
-    for (OrganProgram& p : programs) {
-      if (p.id) glDeleteProgram(p.id);
+    for (auto& variants : programs) {
+      for (OrganProgram& p : variants) {
+        if (p.id) glDeleteProgram(p.id);
+      }
     }
+    if (oit.fbo) oit.destroy();
     multisampled.destroy();
     resolved.destroy();
   }
@@ -275,7 +396,7 @@ Renderer::Renderer(int width, int height, int msaa_samples) : impl_(std::make_un
 
     // Linked now so a broken shader fails at set-up; other light counts link on first use.
     constexpr int kDefaultLights = 2;  // scene's default_lights(): a key and a fill.
-    r.programs[kDefaultLights].create(kDefaultLights);
+    r.program(kDefaultLights, 0);
 
     // Fixed state: it never changes between frames, and this context is ours alone.
     glBindFramebuffer(GL_FRAMEBUFFER, r.draw_fbo());
@@ -308,9 +429,13 @@ GlInfo Renderer::info() const {
 
 int Renderer::add_surface(const std::vector<Eigen::Vector3i>& triangles,
                           const std::vector<scene::Color>& vertex_colors,
-                          const scene::Material& material) {
+                          const scene::Material& material, const std::vector<double>& vertex_opacity) {
   Impl& r = *impl_;
   const std::size_t vertex_count = vertex_colors.size();
+  if (!vertex_opacity.empty() && vertex_opacity.size() != vertex_count) {
+    fail("add_surface: " + std::to_string(vertex_opacity.size()) + " opacities for " + std::to_string(vertex_count) +
+         " vertices");
+  }
   if (vertex_count == 0 || vertex_count > std::numeric_limits<std::uint32_t>::max()) {
     fail("a surface needs between 1 and 2^32-1 vertices, got " + std::to_string(vertex_count));
   }
@@ -335,9 +460,16 @@ int Renderer::add_surface(const std::vector<Eigen::Vector3i>& triangles,
     for (int k = 0; k < 3; ++k) colors.push_back(static_cast<float>(std::clamp(c[k], 0.0, 1.0)));
   }
 
+  std::vector<float> opacity(vertex_count, static_cast<float>(std::clamp(material.opacity, 0.0, 1.0)));
+  for (std::size_t v = 0; v < vertex_opacity.size(); ++v) {
+    opacity[v] = static_cast<float>(std::clamp(vertex_opacity[v], 0.0, 1.0));  // NaN-free: the scene is validated.
+  }
+
   r.make_current();
   Surface s;
   s.vertex_count = vertex_count;
+  s.min_opacity = *std::min_element(opacity.begin(), opacity.end());
+  s.max_opacity = *std::max_element(opacity.begin(), opacity.end());
   s.index_count = static_cast<GLsizei>(indices.size());
   s.specular = static_cast<float>(std::max(material.specular, 0.0));
   s.shininess = static_cast<float>(std::max(material.shininess, 1.0));
@@ -345,16 +477,17 @@ int Renderer::add_surface(const std::vector<Eigen::Vector3i>& triangles,
 
   glGenVertexArrays(1, &s.vao);
   glBindVertexArray(s.vao);
-  const auto attribute = [&](GLuint& buffer, GLuint location, const void* data, GLenum usage) {
+  const auto attribute = [&](GLuint& buffer, GLuint location, const void* data, GLenum usage, int size = 3) {
     glGenBuffers(1, &buffer);
     glBindBuffer(GL_ARRAY_BUFFER, buffer);
-    glBufferData(GL_ARRAY_BUFFER, bytes, data, usage);
-    glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    glBufferData(GL_ARRAY_BUFFER, bytes / 3 * size, data, usage);
+    glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, size * static_cast<GLsizei>(sizeof(float)), nullptr);
     glEnableVertexAttribArray(location);
   };
   attribute(s.positions, kPositionAttrib, nullptr, GL_DYNAMIC_DRAW);
   attribute(s.normals, kNormalAttrib, nullptr, GL_DYNAMIC_DRAW);
   attribute(s.colors, kColorAttrib, colors.data(), GL_STATIC_DRAW);
+  attribute(s.opacity, kOpacityAttrib, opacity.data(), GL_STATIC_DRAW, 1);
   glGenBuffers(1, &s.indices);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, s.indices);  // Recorded in the VAO.
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
@@ -397,7 +530,34 @@ void Renderer::update_surface(int id, const float* positions_xyz, const float* n
   s.uploaded = true;
 }
 
+void Renderer::update_colors(int id, const float* colors_rgb) {
+  Impl& r = *impl_;
+  if (id < 0 || static_cast<std::size_t>(id) >= r.surfaces.size()) {
+    fail("update_colors: unknown surface id " + std::to_string(id));
+  }
+  if (!colors_rgb) fail("update_colors: null colours");
+  const Surface& s = r.surfaces[static_cast<std::size_t>(id)];
+  r.make_current();
+  glBindBuffer(GL_ARRAY_BUFFER, s.colors);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(s.vertex_count * 3 * sizeof(float)), colors_rgb);
+}
+
+void Renderer::set_clip(int id, const scene::ClipPlane& clip) {
+  Impl& r = *impl_;
+  if (id < 0 || static_cast<std::size_t>(id) >= r.surfaces.size()) {
+    fail("set_clip: unknown surface id " + std::to_string(id));
+  }
+  r.surfaces[static_cast<std::size_t>(id)].clip = clip;
+}
+
 void Renderer::draw(const scene::Camera& camera, const std::vector<scene::Light>& lights,
+                    const scene::Color& background) {
+  ViewDraw whole;
+  whole.camera = camera;
+  draw(std::vector<ViewDraw>{whole}, lights, background);
+}
+
+void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene::Light>& lights,
                     const scene::Color& background) {
   Impl& r = *impl_;
   if (lights.size() > static_cast<std::size_t>(kMaxLights)) {
@@ -405,21 +565,50 @@ void Renderer::draw(const scene::Camera& camera, const std::vector<scene::Light>
                                           " lights are supported, the scene has " +
                                           std::to_string(lights.size()));
   }
-  const Eigen::Matrix4d view = look_at(camera);  // Validates the camera.
-
-  // Everything drawn, as one sphere around the union of the surfaces' boxes.
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
-  for (const Surface& s : r.surfaces) {
-    if (!s.uploaded) continue;
-    lo = lo.cwiseMin(s.box_min);
-    hi = hi.cwiseMax(s.box_max);
+  std::vector<PreparedView>& prepared = r.prepared;
+  prepared.clear();
+  for (const ViewDraw& v : views) {
+    PreparedView p;
+    p.source = &v;
+    scene::PixelRect rect = v.rect;
+    if (rect.width == 0 || rect.height == 0) rect = {0, 0, r.width, r.height};
+    if (rect.x < 0 || rect.y < 0 || rect.width < 1 || rect.height < 1 || rect.x + rect.width > r.width ||
+        rect.y + rect.height > r.height) {
+      throw Error(ExitCode::kDataError, "render: a view's rectangle lies outside the " + std::to_string(r.width) +
+                                            "x" + std::to_string(r.height) + " frame");
+    }
+    for (const int id : v.surfaces) {
+      if (id < 0 || static_cast<std::size_t>(id) >= r.surfaces.size()) {
+        throw Error(ExitCode::kDataError, "render: a view names unknown surface " + std::to_string(id));
+      }
+    }
+    const Eigen::Matrix4d view = look_at(v.camera);  // Validates the camera.
+    // Everything this view draws, as one sphere around the union of its surfaces' boxes.
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d hi = -lo;
+    const auto include = [&](const Surface& s) {
+      if (!s.uploaded) return;
+      lo = lo.cwiseMin(s.box_min);
+      hi = hi.cwiseMax(s.box_max);
+    };
+    if (v.surfaces.empty()) {
+      for (const Surface& s : r.surfaces) include(s);
+    } else {
+      for (const int id : v.surfaces) include(r.surfaces[static_cast<std::size_t>(id)]);
+    }
+    BoundingSphere bounds;
+    if (lo.allFinite() && hi.allFinite()) bounds = {(lo + hi) / 2, (hi - lo).norm() / 2};
+    const DepthRange depth = fit_depth_range(v.camera, bounds);
+    p.view_projection =
+        (perspective(v.camera.fov_rad, static_cast<double>(rect.width) / rect.height, depth) * view).cast<float>();
+    p.eye = v.camera.position_m.cast<float>();
+    p.up = view.block<1, 3>(1, 0).transpose().cast<float>();
+    p.x = rect.x;
+    p.y = r.height - rect.y - rect.height;
+    p.width = rect.width;
+    p.height = rect.height;
+    prepared.push_back(p);
   }
-  BoundingSphere bounds;
-  if (lo.allFinite() && hi.allFinite()) bounds = {(lo + hi) / 2, (hi - lo).norm() / 2};
-  const DepthRange depth = fit_depth_range(camera, bounds);
-  const Eigen::Matrix4f view_projection =
-      (perspective(camera.fov_rad, static_cast<double>(r.width) / r.height, depth) * view).cast<float>();
 
   std::array<float, 3 * kMaxLights> to_light{};
   std::array<float, 3 * kMaxLights> radiance{};
@@ -435,31 +624,154 @@ void Renderer::draw(const scene::Camera& camera, const std::vector<scene::Light>
     }
     ++light_count;
   }
-  const Eigen::Vector3f eye = camera.position_m.cast<float>();
-  const Eigen::Vector3f up = view.block<1, 3>(1, 0).transpose().cast<float>();
+
+  // Draws the surfaces of view `p` that have a part in this pass.
+  const auto draw_view = [&](const PreparedView& p, bool transparent_pass) {
+    glViewport(p.x, p.y, p.width, p.height);
+    const auto draw_one = [&](const Surface& s) {
+      if (!s.uploaded) return;
+      const bool has_transparent = s.min_opacity < kOpaqueFrom;
+      if (transparent_pass ? !has_transparent : s.max_opacity < kOpaqueFrom) return;
+      const scene::ClipPlane& clip = s.clip.enabled ? s.clip : p.source->clip;
+      int variant = clip.enabled ? kClipVariant : 0;
+      if (transparent_pass) variant |= kTransparentPartVariant;
+      else if (has_transparent) variant |= kOpaquePartVariant;
+      OrganProgram& program = r.program(light_count, variant);
+      glUseProgram(program.id);
+      glUniformMatrix4fv(program.loc.view_projection, 1, GL_FALSE, p.view_projection.data());
+      glUniform3fv(program.loc.camera_position, 1, p.eye.data());
+      glUniform3fv(program.loc.up, 1, p.up.data());
+      glUniform3fv(program.loc.light_to_light, std::max(light_count, 1), to_light.data());
+      glUniform3fv(program.loc.light_radiance, std::max(light_count, 1), radiance.data());
+      glUniform1f(program.loc.specular, s.specular);
+      glUniform1f(program.loc.shininess, s.shininess);
+      if (clip.enabled) {
+        const Eigen::Vector3d n = clip.normal.normalized();
+        const Eigen::Vector4f plane(static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z()),
+                                    static_cast<float>(-n.dot(clip.point_m)));
+        const Eigen::Vector3f cut = clip.cut_color.cwiseMax(0.0).cwiseMin(1.0).cast<float>();
+        glUniform4fv(program.loc.clip_plane, 1, plane.data());
+        glUniform3fv(program.loc.cut_color, 1, cut.data());
+        glEnable(GL_CLIP_DISTANCE0);
+        glDisable(GL_CULL_FACE);  // The inside, seen through the cut, is the cut face.
+      }
+      glBindVertexArray(s.vao);
+      glDrawElements(GL_TRIANGLES, s.index_count, GL_UNSIGNED_INT, nullptr);
+      if (clip.enabled) {
+        glDisable(GL_CLIP_DISTANCE0);
+        glEnable(GL_CULL_FACE);
+      }
+    };
+    if (p.source->surfaces.empty()) {
+      for (const Surface& s : r.surfaces) draw_one(s);
+    } else {
+      for (const int id : p.source->surfaces) draw_one(r.surfaces[static_cast<std::size_t>(id)]);
+    }
+  };
 
   r.make_current();
   glBindFramebuffer(GL_FRAMEBUFFER, r.draw_fbo());
+  glViewport(0, 0, r.width, r.height);
   // The framebuffer holds sRGB-encoded values (the shader encodes), so the background
   // is cleared as given.
   glClearColor(static_cast<float>(background.x()), static_cast<float>(background.y()),
                static_cast<float>(background.z()), 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  for (const PreparedView& p : prepared) draw_view(p, false);
 
-  OrganProgram& program = r.programs[static_cast<std::size_t>(light_count)];
-  if (!program.id) program.create(light_count);
-  glUseProgram(program.id);
-  glUniformMatrix4fv(program.loc.view_projection, 1, GL_FALSE, view_projection.data());
-  glUniform3fv(program.loc.camera_position, 1, eye.data());
-  glUniform3fv(program.loc.up, 1, up.data());
-  glUniform3fv(program.loc.light_to_light, std::max(light_count, 1), to_light.data());
-  glUniform3fv(program.loc.light_radiance, std::max(light_count, 1), radiance.data());
-  for (const Surface& s : r.surfaces) {
-    if (!s.uploaded) continue;
-    glUniform1f(program.loc.specular, s.specular);
-    glUniform1f(program.loc.shininess, s.shininess);
-    glBindVertexArray(s.vao);
-    glDrawElements(GL_TRIANGLES, s.index_count, GL_UNSIGNED_INT, nullptr);
+  // The pixels the transparent parts can touch: the union over views of their boxes'
+  // projections (the whole view when a box reaches behind the eye), in GL pixels. The
+  // OIT clear, accumulation and composite are scissored to it: llvmpipe pays per pixel.
+  int x0 = r.width, y0 = r.height, x1 = 0, y1 = 0;
+  for (const PreparedView& p : prepared) {
+    const auto include = [&](const Surface& s) {
+      if (!s.uploaded || !(s.min_opacity < kOpaqueFrom)) return;
+      double lo_x = 1, lo_y = 1, hi_x = -1, hi_y = -1;  // NDC
+      bool behind = false;
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d c((corner & 1) ? s.box_max.x() : s.box_min.x(), (corner & 2) ? s.box_max.y() : s.box_min.y(),
+                                (corner & 4) ? s.box_max.z() : s.box_min.z());
+        const Eigen::Vector4d clip = p.view_projection.cast<double>() * c.homogeneous();
+        if (!(clip.w() > 1e-9)) {
+          behind = true;
+          break;
+        }
+        lo_x = std::min(lo_x, clip.x() / clip.w());
+        hi_x = std::max(hi_x, clip.x() / clip.w());
+        lo_y = std::min(lo_y, clip.y() / clip.w());
+        hi_y = std::max(hi_y, clip.y() / clip.w());
+      }
+      if (behind) lo_x = lo_y = -1, hi_x = hi_y = 1;
+      lo_x = std::max(lo_x, -1.0), lo_y = std::max(lo_y, -1.0), hi_x = std::min(hi_x, 1.0), hi_y = std::min(hi_y, 1.0);
+      if (lo_x > hi_x || lo_y > hi_y) return;  // Off screen.
+      // One pixel of margin for rasterization at the edges.
+      x0 = std::min(x0, p.x + std::max(0, static_cast<int>(std::floor((lo_x + 1) / 2 * p.width)) - 1));
+      y0 = std::min(y0, p.y + std::max(0, static_cast<int>(std::floor((lo_y + 1) / 2 * p.height)) - 1));
+      x1 = std::max(x1, p.x + std::min(p.width, static_cast<int>(std::ceil((hi_x + 1) / 2 * p.width)) + 1));
+      y1 = std::max(y1, p.y + std::min(p.height, static_cast<int>(std::ceil((hi_y + 1) / 2 * p.height)) + 1));
+    };
+    if (p.source->surfaces.empty()) {
+      for (const Surface& s : r.surfaces) include(s);
+    } else {
+      for (const int id : p.source->surfaces) include(r.surfaces[static_cast<std::size_t>(id)]);
+    }
+  }
+  const bool any_transparent = x1 > x0 && y1 > y0;
+  r.frame_resolved = false;
+  if (any_transparent) {
+    // Weighted blended OIT: accumulate every transparent part against the opaque depth
+    // (tested, not written), then composite over the opaque frame.
+    if (!r.oit.fbo) {
+      r.oit.create(r.width, r.height, r.samples, r.samples > 0 ? r.multisampled.depth : r.resolved.depth);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, r.oit.fbo);
+    glViewport(0, 0, r.width, r.height);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x0, y0, x1 - x0, y1 - y0);
+    const float zero[] = {0, 0, 0, 0};
+    const float one[] = {1, 1, 1, 1};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    glClearBufferfv(GL_COLOR, 1, one);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendFunci(0, GL_ONE, GL_ONE);
+    glBlendFunci(1, GL_ZERO, GL_ONE_MINUS_SRC_COLOR);
+    for (const PreparedView& p : prepared) draw_view(p, true);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_SCISSOR_TEST);  // Blits are scissored too: the opaque resolve needs every pixel.
+
+    if (r.samples > 0) {  // Resolve the opaque frame and both OIT targets, then composite.
+      glBindFramebuffer(GL_READ_FRAMEBUFFER, r.multisampled.fbo);
+      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.resolved.fbo);
+      glBlitFramebuffer(0, 0, r.width, r.height, 0, 0, r.width, r.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      glBindFramebuffer(GL_READ_FRAMEBUFFER, r.oit.fbo);
+      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.oit.texture_fbo);
+      for (const GLenum attachment : {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1}) {
+        glReadBuffer(attachment);
+        glDrawBuffer(attachment);
+        glBlitFramebuffer(0, 0, r.width, r.height, 0, 0, r.width, r.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      }
+      const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+      glReadBuffer(GL_COLOR_ATTACHMENT0);
+      glDrawBuffers(2, both);
+      r.frame_resolved = true;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, r.resolved.fbo);
+    glEnable(GL_SCISSOR_TEST);
+    glDisable(GL_DEPTH_TEST);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(r.oit.composite_program);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, r.oit.accumulation);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, r.oit.revealage);
+    glActiveTexture(GL_TEXTURE0);
+    glBindVertexArray(r.oit.empty_vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, r.draw_fbo());
   }
   glBindVertexArray(0);
   glFinish();
@@ -469,7 +781,7 @@ void Renderer::draw(const scene::Camera& camera, const std::vector<scene::Light>
 void Renderer::read_frame(Image& out) {
   Impl& r = *impl_;
   r.make_current();
-  if (r.samples > 0) {
+  if (r.samples > 0 && !r.frame_resolved) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, r.multisampled.fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.resolved.fbo);
     glBlitFramebuffer(0, 0, r.width, r.height, 0, 0, r.width, r.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);

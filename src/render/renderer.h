@@ -27,6 +27,14 @@ struct GlInfo {
   std::string glsl_version;
 };
 
+/// One panel of the frame: a camera, the pixels it draws into and which surfaces it shows.
+struct ViewDraw {
+  scene::Camera camera;     ///< Already at the frame's time (app/camera_motion.h); only its pose and fov are read.
+  scene::PixelRect rect;    ///< Where in the frame, top-left origin; width or height 0: the whole frame. unit: px
+  std::vector<int> surfaces;  ///< Surface ids shown; empty: every surface.
+  scene::ClipPlane clip;    ///< Cuts the view's surfaces that have no clip of their own (set_clip).
+};
+
 class Renderer {
  public:
   /// Creates the context and a width x height framebuffer with `msaa_samples` (0, 2 or 4).
@@ -44,8 +52,20 @@ class Renderer {
   /// decoded to linear light in the shader. Triangles are counter-clockwise seen from
   /// outside (back faces are culled). The surface is drawn once update_surface gave it
   /// positions. Throws Error(kInternal) for an index out of range.
+  /// `vertex_opacity` (unit: 1, in [0, 1]), when not empty, gives each vertex its opacity
+  /// (region opacities); else every vertex has material.opacity. Parts below 1 are drawn
+  /// with weighted blended order-independent transparency over the opaque ones.
   int add_surface(const std::vector<Eigen::Vector3i>& triangles,
-                  const std::vector<scene::Color>& vertex_colors, const scene::Material& material);
+                  const std::vector<scene::Color>& vertex_colors, const scene::Material& material,
+                  const std::vector<double>& vertex_opacity = {});
+
+  /// Replaces a surface's per-vertex sRGB colours, 3 floats per vertex (colour maps that
+  /// change every frame). No GL allocation. Throws Error(kInternal) for an unknown id.
+  void update_colors(int id, const float* colors_rgb);
+
+  /// Cuts a surface with its own plane (clip.enabled false: none, the default). A cut
+  /// surface is drawn without back-face culling, its back faces flat in clip.cut_color.
+  void set_clip(int id, const scene::ClipPlane& clip);
 
   /// Uploads a surface's current vertex positions (unit: m, world space) and unit normals,
   /// 3 floats per vertex, vertex count as given to add_surface. No GL allocation.
@@ -56,6 +76,12 @@ class Renderer {
   /// `background` is sRGB. Near and far planes follow the surfaces' bounding sphere.
   /// Throws Error(kDataError) for more than kMaxLights lights or a degenerate camera.
   void draw(const scene::Camera& camera, const std::vector<scene::Light>& lights,
+            const scene::Color& background);
+
+  /// Draws several views into one frame (split screen), each into its rectangle with its
+  /// own depth range and aspect; then as draw() above. Throws Error(kDataError) for a
+  /// rectangle outside the frame or an unknown surface id.
+  void draw(const std::vector<ViewDraw>& views, const std::vector<scene::Light>& lights,
             const scene::Color& background);
 
   /// Reads the last frame back (resolving multisampling), top row first, into `out`

@@ -12,4 +12,19 @@ double Output::frame_period_s() const {
   return 1.0 / (fps * slow_motion);
 }
 
+std::vector<PixelRect> view_rectangles(int width, int height, int view_count) {
+  std::vector<PixelRect> rects;
+  if (view_count < 1) return rects;
+  const int columns = view_count <= 3 ? view_count : static_cast<int>(std::ceil(std::sqrt(view_count)));
+  const int rows = (view_count + columns - 1) / columns;
+  for (int i = 0; i < view_count; ++i) {
+    const int column = i % columns, row = i / columns;
+    // Edges at exact integer fractions of the frame: neighbours share them, nothing is lost.
+    const int x0 = column * width / columns, x1 = (column + 1) * width / columns;
+    const int y0 = row * height / rows, y1 = (row + 1) * height / rows;
+    rects.push_back({x0, y0, x1 - x0, y1 - y0});
+  }
+  return rects;
+}
+
 }  // namespace systole::scene

@@ -100,6 +100,8 @@ struct Region {
   std::vector<PathKey> motion;
   bool has_color = false;
   Color color = Color(0.8, 0.3, 0.3);  ///< Used when has_color; else the organ's material.
+  bool has_opacity = false;
+  double opacity = 1;          ///< Used when has_opacity; else the material's. unit: 1, in [0, 1]
   Origin origin;
 };
 
@@ -125,6 +127,24 @@ struct Material {
   Color color = Color(0.72, 0.16, 0.14);
   double specular = 0.35;  ///< Strength of the highlight. unit: 1
   double shininess = 24;   ///< Blinn-Phong exponent. unit: 1
+  double opacity = 1;      ///< 1 opaque, 0 invisible; below 1 drawn with order-independent transparency. unit: 1
+};
+
+/// A plane that cuts an organ open: the side dot(x - point, normal) < 0 is removed, and the
+/// inside seen through the cut is drawn flat in cut_color.
+struct ClipPlane {
+  bool enabled = false;
+  Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  ///< A point on the plane, world space. unit: m
+  Eigen::Vector3d normal = -Eigen::Vector3d::UnitZ();  ///< Points to the side kept (normalised). unit: 1
+  Color cut_color = Color(0.93, 0.78, 0.62);           ///< sRGB of the cut face.
+};
+
+/// What a surface's colour shows. The colour maps are in render/color_map.h.
+enum class ColorBy {
+  kMaterial,    ///< The material colour, with region colours where a region sets one.
+  kRegion,      ///< Every region its own colour: its `color`, else one of a fixed palette.
+  kStrain,      ///< Per vertex, mean relative length change of its edges, (L - L0) / L0.
+  kActivation,  ///< Per vertex, its region's drive activation phi(t) in [0, 1].
 };
 
 struct Body {
@@ -182,6 +202,11 @@ struct Organ {
   Body body;
   std::vector<Region> regions;
   Target target;                ///< enabled: `systole tune` fits the regions to it.
+  ColorBy color_by = ColorBy::kMaterial;
+  bool has_color_range = false;
+  /// Values mapped to the ends of the colour map (strain, activation); default by color_by. unit: 1
+  Eigen::Vector2d color_range = Eigen::Vector2d(-0.1, 0.1);
+  ClipPlane clip;
   Origin origin;
 };
 
@@ -199,12 +224,49 @@ struct Solver {
   Origin origin;
 };
 
+/// A key of a camera path: where the eye is and what it looks at, at a time.
+struct CameraKey {
+  double time_s = 0;                                     ///< unit: s
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< unit: m
+  Eigen::Vector3d target_m = Eigen::Vector3d::Zero();    ///< unit: m
+};
+
+/// A turntable: the eye turns about the axis through the target at a constant speed.
+struct Orbit {
+  bool enabled = false;
+  double speed_rad_per_s = 0.3490658503988659;  ///< 20 deg/s; negative turns the other way. unit: rad/s
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitY();  ///< Normalised. unit: 1
+};
+
+/// The camera at time 0 (position, target) and how it moves: fixed, an orbit, or a path
+/// (app/camera_motion.h gives the camera at any time).
 struct Camera {
   Eigen::Vector3d position_m = Eigen::Vector3d(0, 0, 0.4);  ///< unit: m
   Eigen::Vector3d target_m = Eigen::Vector3d::Zero();       ///< unit: m
   Eigen::Vector3d up = Eigen::Vector3d::UnitY();            ///< unit: 1
   double fov_rad = 0.6981317007977318;                      ///< Vertical field of view (40 deg). unit: rad
+  Orbit orbit;
+  std::vector<CameraKey> path;  ///< When not empty: Catmull-Rom through the keys, held outside them.
 };
+
+/// One panel of a split screen: its camera, which organs it shows, an optional cut.
+struct View {
+  bool has_camera = false;
+  Camera camera;                     ///< Used when has_camera; else the scene's camera.
+  std::vector<std::string> organs;   ///< Organ names shown; empty: every organ.
+  ClipPlane clip;                    ///< Cuts the view's organs that have no clip of their own.
+  std::string title;                 ///< Caption for the overlay (not drawn by render/).
+  Origin origin;
+};
+
+/// A view's place in the frame, in pixels, origin at the top left. unit: px
+struct PixelRect {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
+/// The views laid out as a grid over a width x height frame: one row for up to 3 views,
+/// else ceil(sqrt(n)) columns; the last pixel column or row absorbs the rounding.
+std::vector<PixelRect> view_rectangles(int width, int height, int view_count);
 
 struct Light {
   Eigen::Vector3d direction = Eigen::Vector3d(-0.4, -0.6, -1.0);  ///< Direction the light travels. unit: 1
@@ -324,6 +386,7 @@ struct Scene {
   Solver solver;
   Camera camera;
   std::vector<Light> lights;
+  std::vector<View> views;  ///< Split screen; empty: one view of every organ with `camera`.
   Output output;
   std::vector<Card> cards;         ///< Shown in order before the clip.
   std::vector<Caption> captions;

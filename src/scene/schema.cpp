@@ -204,15 +204,18 @@ ValueSpec<std::string> path_text() {
   return spec;
 }
 
-/// Words shown on screen (captions, cards): any non-empty text; "\n" breaks a line.
-ValueSpec<std::string> free_text() {
+/// Words shown on screen (cards, captions, view titles): non-empty text of at most
+/// `max_chars`; "\n" breaks a line unless `one_line`.
+ValueSpec<std::string> screen_text(std::size_t max_chars, bool one_line) {
   ValueSpec<std::string> spec;
   spec.type = "text";
-  spec.range = "1..500 characters";
-  spec.read = [](const Node& node, std::string& out, const std::string& path, const Context&) {
+  spec.range = "1.." + std::to_string(max_chars) + " characters" + (one_line ? ", one line" : "");
+  spec.read = [max_chars, one_line](const Node& node, std::string& out, const std::string& path, const Context&) {
     if (node.kind != Node::Kind::kScalar || node.scalar.empty())
       fail(node.origin, path, "expected text (quote it if it contains ': ' or starts with a symbol); got " + node.describe());
-    if (node.scalar.size() > 500) fail(node.origin, path, "text of " + std::to_string(node.scalar.size()) + " characters is outside 1..500");
+    if (node.scalar.size() > max_chars)
+      fail(node.origin, path, "text of " + std::to_string(node.scalar.size()) + " characters is outside 1.." + std::to_string(max_chars));
+    if (one_line && node.scalar.find('\n') != std::string::npos) fail(node.origin, path, "expected one line of text");
     out = node.scalar;
   };
   spec.show = [](const std::string& v) { return v.empty() ? std::string("—") : v; };
@@ -498,6 +501,32 @@ ValueSpec<std::vector<PathKey>> path_keys(std::string position_doc) {
       "1..1024 keys, times increasing");
 }
 
+/// Two numbers [lo, hi] with lo < hi.
+ValueSpec<Eigen::Vector2d> value_pair() {
+  ValueSpec<Eigen::Vector2d> spec;
+  spec.type = "2 numbers";
+  spec.range = "[lo, hi], lo < hi";
+  spec.read = [](const Node& node, Eigen::Vector2d& out, const std::string& path, const Context&) {
+    if (node.kind != Node::Kind::kList || node.items.size() != 2)
+      fail(node.origin, path, "expected a list of 2 numbers [lo, hi]; got " + node.describe());
+    for (int i = 0; i < 2; ++i) out[i] = parse_quantity(node.items[i], Dimension::kNumber, path + "[" + std::to_string(i) + "]");
+    if (!(out[0] < out[1])) fail(node.origin, path, "expected lo < hi; got [" + format_number(out[0]) + ", " + format_number(out[1]) + "]");
+  };
+  spec.show = [](const Eigen::Vector2d& v) { return "[" + format_number(v[0]) + ", " + format_number(v[1]) + "]"; };
+  return spec;
+}
+
+ValueSpec<ClipPlane> clip_spec() {
+  return map<ClipPlane>({
+      field("point", vec3(Dimension::kLength), &ClipPlane::point_m, "A point on the cutting plane (world space)."),
+      field("normal", direction(), &ClipPlane::normal, "Points to the side kept; the other side is cut away (normalised on reading).").required(),
+      field("cut_color", color(), &ClipPlane::cut_color, "Flat colour of the inside seen through the cut (sRGB)."),
+  }, [](const Node&, ClipPlane& c, const std::string&, const Context&) {
+    c.enabled = true;
+    c.normal.normalize();
+  });
+}
+
 ValueSpec<Region> region_spec() {
   return map<Region>({
       field("name", name_text(), &Region::name, "Unique within the organ; also the default part to select.").required(),
@@ -511,6 +540,8 @@ ValueSpec<Region> region_spec() {
             "Pinned regions: a prescribed motion (a kinematic region), smoothly interpolated, held after the last key."),
       field<Region, Color>("color", color(), [](Region& r) -> Color& { r.has_color = true; return r.color; },
             "Colour of the region; else the organ's material colour.").shown_default("material color"),
+      field<Region, double>("opacity", number(closed(0, 1)), [](Region& r) -> double& { r.has_opacity = true; return r.opacity; },
+            "Opacity of the region; else the material's.").shown_default("material opacity"),
   }, [](const Node& node, Region& r, const std::string& path, const Context&) {
     r.origin = node.origin;
     if (!r.motion.empty() && !r.pinned)
@@ -644,7 +675,14 @@ ValueSpec<Organ> organ_spec() {
                 field("color", color(), &Material::color, "Surface colour (sRGB)."),
                 field("specular", number(closed(0, 1)), &Material::specular, "Strength of the highlight."),
                 field("shininess", number(closed(1, 1000)), &Material::shininess, "Blinn-Phong exponent: larger is a tighter highlight."),
+                field("opacity", number(closed(0, 1)), &Material::opacity, "1 opaque; below 1 the organ is see-through (order-independent transparency, docs/teaching-visuals.md)."),
             }), &Organ::material, "How the surface looks."),
+      field("color_by", choice<ColorBy>({{"material", ColorBy::kMaterial}, {"region", ColorBy::kRegion},
+                                         {"strain", ColorBy::kStrain}, {"activation", ColorBy::kActivation}}),
+            &Organ::color_by, "What the surface colour shows: `material` (region colours where set), `region` (every region a colour: its own or a palette's), `strain` (mean (L - L0) / L0 of each vertex's edges, blue shortened, red stretched), `activation` (the region's drive phi(t), dark to yellow)."),
+      field<Organ, Eigen::Vector2d>("color_range", value_pair(), [](Organ& o) -> Eigen::Vector2d& { o.has_color_range = true; return o.color_range; },
+            "`strain`, `activation`: the values at the two ends of the colour map.").shown_default("strain [-0.15, 0.15]; activation [0, 1]"),
+      field("clip", clip_spec(), &Organ::clip, "Cuts the organ open along a plane.").shown_default("none"),
       field("body", map<Body>({
                 field("mass", quantity(Dimension::kMass, open_closed(0, 1000)), &Body::mass_kg, "Total mass, spread over vertices by area."),
                 field("stiffness", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Body::stiffness_N_per_m, "Spring stiffness of each surface edge."),
@@ -660,6 +698,7 @@ ValueSpec<Organ> organ_spec() {
   }, [](const Node& node, Organ& o, const std::string& path, const Context&) {
     o.origin = node.origin;
     check_target_names(node, o, path);
+    if (!o.has_color_range) o.color_range = o.color_by == ColorBy::kActivation ? Eigen::Vector2d(0, 1) : Eigen::Vector2d(-0.15, 0.15);
     for (std::size_t i = 0; i < o.regions.size(); ++i)
       for (std::size_t j = 0; j < i; ++j)
         if (o.regions[i].name == o.regions[j].name)
@@ -736,16 +775,48 @@ ValueSpec<Floor> floor_spec() {
 }
 
 ValueSpec<Camera> camera_spec() {
+  auto orbit = map<Orbit>({
+      field("speed", quantity(Dimension::kAngularSpeed, closed(-3600, 3600)), &Orbit::speed_rad_per_s, "Turning speed; negative turns the other way."),
+      field("axis", direction(), &Orbit::axis, "Axis through the target the eye turns about (normalised on reading)."),
+  }, [](const Node&, Orbit& o, const std::string&, const Context&) {
+    o.enabled = true;
+    o.axis.normalize();
+  });
+  auto key = map<CameraKey>({
+      field("time", quantity(Dimension::kTime, closed(0, 3600)), &CameraKey::time_s, "When the camera is here.").required(),
+      field("position", vec3(Dimension::kLength), &CameraKey::position_m, "Eye position.").required(),
+      field("target", vec3(Dimension::kLength), &CameraKey::target_m, "Point looked at.").required(),
+  });
+  auto path_spec = list(key, 1, 1024, "list of camera keys").also(
+      [](const std::vector<CameraKey>& keys) {
+        for (std::size_t i = 1; i < keys.size(); ++i)
+          if (keys[i].time_s <= keys[i - 1].time_s) return "times must increase (key " + std::to_string(i) + ")";
+        return std::string();
+      },
+      "1..1024 keys, times increasing");
   return map<Camera>({
       field("position", vec3(Dimension::kLength), &Camera::position_m, "Eye position."),
       field("target", vec3(Dimension::kLength), &Camera::target_m, "Point looked at."),
       field("up", direction(), &Camera::up, "Up direction (not parallel to the view)."),
       field("fov", quantity(Dimension::kAngle, open(1, 170)), &Camera::fov_rad, "Vertical field of view."),
+      field("orbit", orbit, &Camera::orbit, "Turntable: the eye turns about `axis` through the target, starting at `position`.").shown_default("none"),
+      field("path", path_spec, &Camera::path, "Key-framed camera: a Catmull-Rom curve through the keys' positions and targets, held before the first and after the last; `position` and `target` are then unused."),
   }, [](const Node& node, Camera& c, const std::string& path, const Context&) {
-    const Eigen::Vector3d view = c.target_m - c.position_m;
-    if (view.norm() < 1e-9) fail(origin_of(node, "target"), join(path, "target"), "must differ from position");
-    if (view.normalized().cross(c.up.normalized()).norm() < 1e-6)
-      fail(origin_of(node, "up"), join(path, "up"), "must not be parallel to the view direction (target - position)");
+    if (c.orbit.enabled && !c.path.empty())
+      fail(origin_of(node, "orbit"), join(path, "orbit"), "a camera has an orbit or a path, not both");
+    const auto check_view = [&](const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const std::string& key) {
+      const Eigen::Vector3d view = target - eye;
+      if (view.norm() < 1e-9) fail(origin_of(node, key), join(path, key), "target must differ from position");
+      if (view.normalized().cross(c.up.normalized()).norm() < 1e-6)
+        fail(origin_of(node, "up"), join(path, "up"), "must not be parallel to the view direction (target - position)");
+    };
+    if (c.path.empty()) {
+      check_view(c.position_m, c.target_m, "target");
+    } else {
+      for (const CameraKey& k : c.path) check_view(k.position_m, k.target_m, "path");
+      c.position_m = c.path.front().position_m;
+      c.target_m = c.path.front().target_m;
+    }
   });
 }
 
@@ -770,7 +841,7 @@ Format format_of_file(const std::string& file) {
 
 ValueSpec<Card> card_spec() {
   return map<Card>({
-      field("text", free_text(), &Card::text, "The card's words; a line break (\\n, or a YAML block) starts a smaller line under the title.").required(),
+      field("text", screen_text(500, false), &Card::text, "The card's words; a line break (\\n, or a YAML block) starts a smaller line under the title.").required(),
       field("duration", quantity(Dimension::kTime, open_closed(0, 60)), &Card::duration_s, "How long the card shows (video time)."),
       field("fade", quantity(Dimension::kTime, closed(0, 10)), &Card::fade_s, "Fade in at the start and out at the end."),
       field("size", number(open_closed(0, 0.5)), &Card::size, "Title height as a fraction of the frame height."),
@@ -785,7 +856,7 @@ ValueSpec<Card> card_spec() {
 
 ValueSpec<Caption> caption_spec() {
   return map<Caption>({
-      field("text", free_text(), &Caption::text, "The caption's words, one line.").required(),
+      field("text", screen_text(500, false), &Caption::text, "The caption's words, one line.").required(),
       field("from", quantity(Dimension::kTime, closed(0, 36000)), &Caption::from_s, "Start, in video time from the clip's first frame (after the cards).").required(),
       field("to", quantity(Dimension::kTime, open_closed(0, 36000)), &Caption::to_s, "End, in video time (after from).").required(),
       field("fade", quantity(Dimension::kTime, closed(0, 10)), &Caption::fade_s, "Fade in after from and out before to."),
@@ -799,6 +870,16 @@ ValueSpec<Caption> caption_spec() {
                                                         format_number(c.to_s - c.from_s) + " s)");
     c.origin = node.origin;
   });
+}
+
+ValueSpec<View> view_spec() {
+  return map<View>({
+      field<View, Camera>("camera", camera_spec(), [](View& v) -> Camera& { v.has_camera = true; return v.camera; },
+            "This view's camera.").shown_default("the scene's camera"),
+      field("organs", list(name_text(), 1, 64, "list of names"), &View::organs, "Names of the organs shown.").shown_default("every organ"),
+      field("clip", clip_spec(), &View::clip, "Cuts this view's organs that have no clip of their own.").shown_default("none"),
+      field("title", screen_text(200, true), &View::title, "Caption of the view, drawn by the overlay."),
+  }, [](const Node& node, View& v, const std::string&, const Context&) { v.origin = node.origin; });
 }
 
 ValueSpec<Output> output_spec() {
@@ -949,6 +1030,7 @@ ValueSpec<Scene> scene_spec() {
       field("solver", solver_spec(), &Scene::solver, "Time integration."),
       field("camera", camera_spec(), &Scene::camera, "The view."),
       field("lights", list(light, 1, 8, "list of lights"), &Scene::lights, "Directional lights.").shown_default("a warm key and a cool fill"),
+      field("views", list(view_spec(), 0, 16, "list of views"), &Scene::views, "Split screen: panels side by side (up to 3) or in a grid, each with its own camera, organs and cut.").shown_default("one view of every organ"),
       field("output", output_spec(), &Scene::output, "The video file."),
       field("cards", list(card_spec(), 0, 16, "list of cards"), &Scene::cards, "Title cards shown in order before the clip: text on the background colour, fading in and out."),
       field("captions", list(caption_spec(), 0, 256, "list of captions"), &Scene::captions, "Text at the bottom of the clip over a time range, fading in and out."),
@@ -960,6 +1042,13 @@ ValueSpec<Scene> scene_spec() {
       if (std::none_of(s.organs.begin(), s.organs.end(), [&](const Organ& o) { return o.name == name; }))
         fail(s.interactions[i].origin, "interactions[" + std::to_string(i) + "]", "no organ is named '" + name + "'");
     }
+    for (std::size_t i = 0; i < s.views.size(); ++i)
+      for (std::size_t k = 0; k < s.views[i].organs.size(); ++k) {
+        const auto& name = s.views[i].organs[k];
+        if (std::none_of(s.organs.begin(), s.organs.end(), [&](const Organ& o) { return o.name == name; }))
+          fail(node.find("views")->items[i].find("organs")->items[k].origin,
+               "views[" + std::to_string(i) + "].organs[" + std::to_string(k) + "]", "no organ is named '" + name + "'");
+      }
     for (std::size_t i = 0; i < s.organs.size(); ++i)
       for (std::size_t j = 0; j < i; ++j)
         if (s.organs[i].name == s.organs[j].name)

@@ -44,7 +44,7 @@ std::optional<double> take_number(std::string_view& text) {
   return value;
 }
 
-const std::array<DimensionInfo, 11> kDimensions = {{
+const std::array<DimensionInfo, 12> kDimensions = {{
     {"number", {}, false, R"("0.5")"},
     {"length", {{"m", 1}, {"cm", 0.01}, {"mm", 0.001}}, false, R"("2 cm" or "0.02 m")"},
     {"mass", {{"kg", 1}, {"g", 0.001}}, false, R"("300 g" or "0.3 kg")"},
@@ -56,11 +56,13 @@ const std::array<DimensionInfo, 11> kDimensions = {{
     {"rate", {{"1/s", 1}}, false, R"("1 1/s")"},
     {"acceleration", {{"m/s^2", 1}}, false, R"("-9.81 m/s^2")"},
     {"force", {{"N", 1}}, false, R"("2 N")"},
+    {"angular speed", {{"deg/s", std::numbers::pi / 180}, {"rad/s", 1}, {"rpm", 2 * std::numbers::pi / 60}}, true,
+     R"("20 deg/s" or "3 rpm")"},
 }};
 
 std::string expectation(const DimensionInfo& d) {
   if (d.units.empty()) return "expected a number";
-  return std::string("expected a") + (d.name == "acceleration" ? "n " : " ") + std::string(d.name) +
+  return std::string("expected a") + (d.name == "acceleration" || d.name == "angular speed" ? "n " : " ") + std::string(d.name) +
          (d.unit_required ? " with a unit" : "") + ", e.g. " + std::string(d.example);
 }
 

@@ -24,6 +24,7 @@ enum class Dimension {
   kRate,          ///< 1/s; a bare number is 1/s.
   kAcceleration,  ///< m/s^2; a bare number is m/s^2.
   kForce,         ///< N; a bare number is newtons.
+  kAngularSpeed,  ///< deg/s, rad/s, rpm; unit required (except 0).
 };
 
 struct Unit {

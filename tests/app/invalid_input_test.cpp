@@ -318,6 +318,10 @@ interactions:
   - poke: {organ: heart, at: [0, 0, 0.03], force: [0, 0, -0.1], drive: {waveform: fourier, rate: 1 Hz, harmonics: [{amplitude: 0.3}]}}
   - grab: {organ: heart, at: [0, 0, -0.03], path: [{time: 0 s, position: [0, 0, -0.03]}]}
 lights: [{direction: [0, 0, -1]}]
+camera: {orbit: {speed: 10 deg/s}}
+views:
+  - camera: {path: [{time: 0 s, position: [0, 0, 0.3], target: [0, 0, 0]}]}
+    clip: {point: [0, 0, 0], normal: [0, 0, -1]}
 output: {width: 64, height: 64, duration: 0.1 s}
 )";
 
@@ -333,7 +337,7 @@ void numeric_paths(const scene::KeySpec& spec, const std::string& prefix, const 
     } else if (!key.keys.empty()) {
       numeric_paths(key, path, doc, out);
     } else if (key.type != "name" && key.type != "path" && key.type != "boolean" && key.type != "one of" &&
-               key.type != "colour") {
+               key.type != "colour" && key.type != "text") {
       out.emplace_back(path, &key);
     }
   }
@@ -346,8 +350,11 @@ TEST(InvalidInput, EveryNumericKeyRefusesNanInfinityAndNonsenseOrCopesWithIt) {
   for (auto& [path, spec] : keys) {
     if (const auto at = path.find('%'); at != std::string::npos) path.replace(at, 1, path.find(".grab") != std::string::npos ? "1" : "0");
     const bool vector = spec->type.starts_with("3 ") || spec->type.starts_with("list");
+    const bool pair = spec->type.starts_with("2 ");
     for (const std::string value : {".nan", ".inf", "-.inf", "1e300", "-1e300", "-1", "0", "1e-300"}) {
-      const std::string written = vector ? "[" + value + ", " + value + ", " + value + "]" : value;
+      const std::string written = vector ? "[" + value + ", " + value + ", " + value + "]"
+                                  : pair ? "[" + value + ", " + value + "]"
+                                         : value;
       const std::string define = path + "=" + written;
       SCOPED_TRACE(define);
       try {
