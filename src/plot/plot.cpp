@@ -1,8 +1,5 @@
 #include "plot/plot.h"
 
-#include <ft2build.h>
-#include FT_FREETYPE_H
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,123 +8,29 @@
 #include <memory>
 
 #include "common/error.h"
+#include "plot/text.h"
 
 namespace systole::plot {
 namespace {
 
-constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-
-/// An image with blending: every drawing call takes a coverage in [0, 1] per pixel.
-class Canvas {
- public:
-  explicit Canvas(Image& image) : image_(image) {}
-
-  void blend(int x, int y, const Rgb& c, double coverage) {
-    if (x < 0 || y < 0 || x >= image_.width || y >= image_.height || coverage <= 0) return;
-    const double a = std::min(1.0, coverage);
-    std::uint8_t* p = image_.row(y) + 3 * static_cast<std::size_t>(x);
-    for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>(std::lround(p[k] + a * (c[k] - p[k])));
-  }
-
-  /// Antialiased segment of the given width: coverage from the distance to the segment.
-  void line(double x0, double y0, double x1, double y1, const Rgb& c, double width) {
-    const double r = 0.5 * width;
-    const int xa = int(std::floor(std::min(x0, x1) - r - 1)), xb = int(std::ceil(std::max(x0, x1) + r + 1));
-    const int ya = int(std::floor(std::min(y0, y1) - r - 1)), yb = int(std::ceil(std::max(y0, y1) + r + 1));
-    const double dx = x1 - x0, dy = y1 - y0, len2 = dx * dx + dy * dy;
-    for (int y = std::max(ya, 0); y <= std::min(yb, image_.height - 1); ++y) {
-      for (int x = std::max(xa, 0); x <= std::min(xb, image_.width - 1); ++x) {
-        const double px = x + 0.5 - x0, py = y + 0.5 - y0;
-        const double t = len2 > 0 ? std::clamp((px * dx + py * dy) / len2, 0.0, 1.0) : 0.0;
-        const double d = std::hypot(px - t * dx, py - t * dy);
-        blend(x, y, c, r + 0.5 - d);
+/// A marker of diameter `size` centred on (cx, cy). unit: px
+void draw_marker(Canvas& canvas, double cx, double cy, Marker m, double size, const Rgb& c) {
+  const double r = 0.5 * size;
+  for (int y = int(cy - r - 2); y <= int(cy + r + 2); ++y) {
+    for (int x = int(cx - r - 2); x <= int(cx + r + 2); ++x) {
+      const double px = x + 0.5 - cx, py = y + 0.5 - cy;
+      double d = 0;  // Signed distance to the outline, negative inside.
+      switch (m) {
+        case Marker::kNone: return;
+        case Marker::kCircle: d = std::hypot(px, py) - r; break;
+        case Marker::kSquare: d = std::max(std::abs(px), std::abs(py)) - 0.8 * r; break;
+        case Marker::kDiamond: d = (std::abs(px) + std::abs(py) - 1.2 * r) / std::sqrt(2.0); break;
+        case Marker::kRing: d = std::abs(std::hypot(px, py) - r) - 1.0; break;
       }
+      canvas.blend(x, y, c, 0.5 - d);
     }
   }
-
-  void marker(double cx, double cy, Marker m, double size, const Rgb& c) {
-    const double r = 0.5 * size;
-    for (int y = int(cy - r - 2); y <= int(cy + r + 2); ++y) {
-      for (int x = int(cx - r - 2); x <= int(cx + r + 2); ++x) {
-        const double px = x + 0.5 - cx, py = y + 0.5 - cy;
-        double d = 0;  // Signed distance to the outline, negative inside.
-        switch (m) {
-          case Marker::kNone: return;
-          case Marker::kCircle: d = std::hypot(px, py) - r; break;
-          case Marker::kSquare: d = std::max(std::abs(px), std::abs(py)) - 0.8 * r; break;
-          case Marker::kDiamond: d = (std::abs(px) + std::abs(py) - 1.2 * r) / std::sqrt(2.0); break;
-          case Marker::kRing: d = std::abs(std::hypot(px, py) - r) - 1.0; break;
-        }
-        blend(x, y, c, 0.5 - d);
-      }
-    }
-  }
-
-  void fill(int x0, int y0, int x1, int y1, const Rgb& c) {
-    for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) blend(x, y, c, 1.0);
-    }
-  }
-
- private:
-  Image& image_;
-};
-
-/// DejaVu Sans through FreeType, at one pixel size at a time.
-class Font {
- public:
-  Font() {
-    if (FT_Init_FreeType(&library_) != 0) throw Error(ExitCode::kInternal, "FreeType failed to start");
-    if (!std::filesystem::exists(kFontPath) || FT_New_Face(library_, kFontPath, 0, &face_) != 0) {
-      FT_Done_FreeType(library_);
-      throw Error(ExitCode::kNoInput, std::string("cannot load the plot font ") + kFontPath +
-                                          " (install Debian's fonts-dejavu-core: scripts/install-deps)");
-    }
-  }
-  ~Font() {
-    FT_Done_Face(face_);
-    FT_Done_FreeType(library_);
-  }
-  Font(const Font&) = delete;
-  Font& operator=(const Font&) = delete;
-
-  void size(int px) { FT_Set_Pixel_Sizes(face_, 0, static_cast<FT_UInt>(px)); }
-
-  /// Advance width of `text`. unit: px
-  double width(const std::string& text) {
-    double w = 0;
-    for (unsigned char ch : text) {
-      if (FT_Load_Char(face_, ch, FT_LOAD_DEFAULT) == 0) w += face_->glyph->advance.x / 64.0;
-    }
-    return w;
-  }
-
-  /// Draws `text` with its baseline starting at (x, y); `vertical` turns it a quarter
-  /// turn counter-clockwise (reading upwards), starting at (x, y).
-  void draw(Canvas& canvas, const std::string& text, double x, double y, const Rgb& color, bool vertical = false) {
-    double pen = 0;
-    for (unsigned char ch : text) {
-      if (FT_Load_Char(face_, ch, FT_LOAD_RENDER) != 0) continue;
-      const FT_GlyphSlot g = face_->glyph;
-      for (unsigned row = 0; row < g->bitmap.rows; ++row) {
-        for (unsigned col = 0; col < g->bitmap.width; ++col) {
-          const double coverage = g->bitmap.buffer[row * g->bitmap.pitch + col] / 255.0;
-          const double u = pen + g->bitmap_left + col, v = double(row) - g->bitmap_top;
-          if (vertical) {
-            canvas.blend(int(std::lround(x + v)), int(std::lround(y - u)), color, coverage);
-          } else {
-            canvas.blend(int(std::lround(x + u)), int(std::lround(y + v)), color, coverage);
-          }
-        }
-      }
-      pen += g->advance.x / 64.0;
-    }
-  }
-
- private:
-  FT_Library library_ = nullptr;
-  FT_Face face_ = nullptr;
-};
+}
 
 std::string tick_text(double v) {
   char text[32];
@@ -252,7 +155,7 @@ Image render(const Figure& figure) {
     }
     for (const auto& p : s.points) {
       const auto [px, py] = to_px(p.x, p.y);
-      canvas.marker(px, py, s.marker, s.marker_px, s.color);
+      draw_marker(canvas, px, py, s.marker, s.marker_px, s.color);
       if (!p.label.empty()) font.draw(canvas, p.label, px + s.marker_px / 2 + 3, py - 3, ink);
     }
   }
@@ -271,7 +174,7 @@ Image render(const Figure& figure) {
     for (std::size_t i = 0; i < listed.size(); ++i) {
       const double cy = y0 + 4 + row * (i + 0.5);
       if (listed[i]->line) canvas.line(x0 + 6, cy, x0 + 30, cy, listed[i]->color, 2);
-      canvas.marker(x0 + 18, cy, listed[i]->marker, listed[i]->marker_px, listed[i]->color);
+      draw_marker(canvas, x0 + 18, cy, listed[i]->marker, listed[i]->marker_px, listed[i]->color);
       font.draw(canvas, listed[i]->name, x0 + 36, cy + 5, ink);
     }
   }
