@@ -11,6 +11,7 @@
 #include "app/bake.h"
 #include "app/frame_list.h"
 #include "app/frame_pipeline.h"
+#include "app/overlay_plan.h"
 #include "app/progress.h"
 #include "app/world.h"
 #include "common/error.h"
@@ -123,6 +124,23 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
     sinks.push_back(std::make_unique<encode::PngSequenceWriter>(request.png_dir, frame_count));
   }
 
+  // Overlays: anchors captured with the positions (produce), handed on through the render
+  // stage's slots (produce may refill its slot before consume is done), drawn after FXAA.
+  OverlayPlan overlay(scene, world);
+  std::vector<OverlayFrame> overlay_produced(kPipelineDepth), overlay_rendered(kPipelineDepth);
+  Eigen::Matrix3Xd volume_positions;
+  if (!overlay.volume_organs().empty() && request.from_bake.empty()) {
+    const auto record = [&](int frame) {
+      for (int o : overlay.volume_organs()) {
+        render_positions(world.organs[static_cast<std::size_t>(o)], volume_positions);
+        overlay.record_volume(o, frame, volume_positions);
+      }
+    };
+    if (world.frames_done == 0) record(0);
+    world.after_frame = record;
+  }
+  std::vector<const Eigen::Matrix3Xd*> frame_positions(world.organs.size());
+
   std::vector<Image> images(kPipelineDepth, Image(out.width, out.height));
   render::Fxaa fxaa;
   std::optional<BakeReader> bake;
@@ -149,8 +167,22 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
       for (Eigen::Index k = 0; k < 3 * n; ++k) buf.positions[k] = static_cast<float>(x[k]);
       mesh::vertex_normals(x, static_cast<int>(n), world.organs[o].geometry.mesh.surface.triangles,
                            buf.normals.data());
+      frame_positions[o] = &buf.mesh_positions;
     }
     times.simulate_s += seconds_since(t0);
+    if (!overlay.empty()) {
+      t0 = Clock::now();
+      // From a bake, the volume history comes from the bake's frames (every one up to this).
+      for (int o : bake ? overlay.volume_organs() : std::vector<int>{}) {
+        for (int g = 0; g <= f; ++g) {
+          if (overlay.has_volume(o, g)) continue;
+          bake->read(g, o, volume_positions);
+          overlay.record_volume(o, g, volume_positions);
+        }
+      }
+      overlay.capture(f, frame_positions, overlay_produced[static_cast<std::size_t>(slot)]);
+      times.simulate_s += seconds_since(t0);  // This thread's own sum: the capture is counted with it.
+    }
   };
   stages.render = [&](int, int slot) {
     auto t0 = Clock::now();
@@ -163,12 +195,19 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
     t0 = Clock::now();
     renderer.read_frame(images[static_cast<std::size_t>(slot)]);
     times.readback_s += seconds_since(t0);
+    if (!overlay.empty()) overlay_rendered[static_cast<std::size_t>(slot)] = overlay_produced[static_cast<std::size_t>(slot)];
   };
   stages.consume = [&](int i, int slot) {
     Image& image = images[static_cast<std::size_t>(slot)];
     auto t0 = Clock::now();
     if (out.antialias == scene::Antialias::kFxaa) fxaa.apply(image);
     times.antialias_s += seconds_since(t0);
+    if (!overlay.empty()) {
+      // After FXAA: text and lines stay crisp.
+      t0 = Clock::now();
+      overlay.draw(image, overlay_rendered[static_cast<std::size_t>(slot)]);
+      times.overlay_s += seconds_since(t0);
+    }
     t0 = Clock::now();
     for (auto& sink : sinks) sink->write(image, frames[static_cast<std::size_t>(i)]);
     times.encode_s += seconds_since(t0);
@@ -187,12 +226,14 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
 
 std::string describe(const StageTimes& t) {
   const double n = t.frames > 0 ? t.frames : 1;
+  char overlay[64] = "";
+  if (t.overlay_s > 0) std::snprintf(overlay, sizeof overlay, ", overlay %.2f ms/frame", 1e3 * t.overlay_s / n);
   char text[512];
   std::snprintf(text, sizeof text,
                 "%d frames in %.2f s: simulate %.2f ms/frame, render %.2f ms/frame, read back %.2f ms/frame, "
-                "anti-alias %.2f ms/frame, encode %.2f ms/frame (stages overlapped)",
+                "anti-alias %.2f ms/frame%s, encode %.2f ms/frame (stages overlapped)",
                 t.frames, t.wall_s, 1e3 * t.simulate_s / n, 1e3 * t.render_s / n, 1e3 * t.readback_s / n,
-                1e3 * t.antialias_s / n, 1e3 * t.encode_s / n);
+                1e3 * t.antialias_s / n, overlay, 1e3 * t.encode_s / n);
   return text;
 }
 

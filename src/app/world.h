@@ -2,6 +2,7 @@
 // The simulated scene: every organ's geometry, body model and state, advanced together
 // on one clock.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,9 @@ struct World {
   double fps = 30;          ///< unit: 1/s
   int frames_done = 0;      ///< Frames the world has been advanced through.
   std::string step_reason;  ///< Why dt and substeps are what they are (for `validate`).
+  /// Called after every frame advance_to_frame steps through (with that frame's number),
+  /// also frames that are not rendered: a trace of a simulated signal needs them all.
+  std::function<void(int frame)> after_frame;
 };
 
 /// Loads or generates every organ and builds its body. The step is the scene's dt (or, for
