@@ -45,7 +45,8 @@ void Canvas::blend(int x, int y, const Rgb& c, double coverage) {
   if (x < 0 || y < 0 || x >= image_.width || y >= image_.height || coverage <= 0) return;
   const double a = std::min(1.0, coverage);
   std::uint8_t* p = image_.row(y) + 3 * static_cast<std::size_t>(x);
-  for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>(std::lround(p[k] + a * (c[k] - p[k])));
+  // The blend lies in [0, 255]: adding 0.5 and truncating rounds it (cheaper than lround).
+  for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>(p[k] + a * (c[k] - p[k]) + 0.5);
 }
 
 void Canvas::line(double x0, double y0, double x1, double y1, const Rgb& c, double width) {
@@ -57,15 +58,27 @@ void Canvas::line(double x0, double y0, double x1, double y1, const Rgb& c, doub
     for (int x = std::max(xa, 0); x <= std::min(xb, image_.width - 1); ++x) {
       const double px = x + 0.5 - x0, py = y + 0.5 - y0;
       const double t = len2 > 0 ? std::clamp((px * dx + py * dy) / len2, 0.0, 1.0) : 0.0;
-      const double d = std::hypot(px - t * dx, py - t * dy);
-      blend(x, y, c, r + 0.5 - d);
+      const double ex = px - t * dx, ey = py - t * dy, d2 = ex * ex + ey * ey;
+      if (d2 >= (r + 0.5) * (r + 0.5)) continue;  // Uncovered: most of the box of a slanted line.
+      blend(x, y, c, r + 0.5 - std::sqrt(d2));
     }
   }
 }
 
 void Canvas::fill(int x0, int y0, int x1, int y1, const Rgb& c, double alpha) {
+  if (alpha <= 0) return;
+  // One opacity for every pixel: what blend() computes, looked up (panels are large).
+  const double a = std::min(1.0, alpha);
+  std::array<std::array<std::uint8_t, 256>, 3> table;
+  for (int k = 0; k < 3; ++k) {
+    for (int v = 0; v < 256; ++v) table[k][v] = static_cast<std::uint8_t>(v + a * (c[k] - v) + 0.5);
+  }
+  const int xa = std::max(x0, 0), xb = std::min(x1, image_.width);
   for (int y = std::max(y0, 0); y < std::min(y1, image_.height); ++y) {
-    for (int x = std::max(x0, 0); x < std::min(x1, image_.width); ++x) blend(x, y, c, alpha);
+    std::uint8_t* p = image_.row(y) + 3 * static_cast<std::size_t>(xa);
+    for (int x = xa; x < xb; ++x, p += 3) {
+      for (int k = 0; k < 3; ++k) p[k] = table[k][p[k]];
+    }
   }
 }
 
