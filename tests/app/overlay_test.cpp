@@ -188,6 +188,32 @@ TEST(OverlayPlan, LegendListsEachRegionColour) {
   }
 }
 
+TEST(OverlayPlan, LabelsDoNotHopFromFrameToFrameInTheShippedScene) {
+  // Placement is decided afresh every frame; for a beating heart the labels should still
+  // glide with their regions, never jump to another side.
+  const scene::Scene s = labelled_heart();
+  app::World world = app::build_world(s);
+  app::OverlayPlan plan(s, world);
+  std::vector<overlay::PlacedLabel> previous;
+  double largest = 0;
+  for (int frame = 0; frame < 75; ++frame) {  // 2.5 s: three beats.
+    app::advance_to_frame(world, frame);
+    const auto x = positions_now(world);
+    Image image(kWidth, kHeight);
+    plan.draw(image, capture(plan, frame, x));
+    const auto& placed = plan.placed_labels();
+    for (std::size_t i = 0; i < previous.size(); ++i) {
+      EXPECT_TRUE(placed[i].free) << placed[i].text << " at frame " << frame;
+      // Where the box sits relative to its anchor: steady when the label glides along.
+      const double dx = (placed[i].box.x - placed[i].anchor_x) - (previous[i].box.x - previous[i].anchor_x);
+      const double dy = (placed[i].box.y - placed[i].anchor_y) - (previous[i].box.y - previous[i].anchor_y);
+      largest = std::max(largest, std::hypot(dx, dy));
+    }
+    previous = placed;
+  }
+  EXPECT_LT(largest, 4.0) << "a label jumped";
+}
+
 TEST(OverlayPlan, FramesAreTheSameBitsOverlappedSerialAndSelected) {
   namespace fs = std::filesystem;
   const auto dir = scratch("overlay_bits");
