@@ -17,6 +17,10 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kSignalRateHz = 500;
 /// The R wave leads the contraction it triggers (the electromechanical delay). unit: s
 constexpr double kElectromechanicalDelayS = 0.04;
+/// Atria driven faster than this flutter or fibrillate: no P waves. unit: Hz (240/min)
+constexpr double kFibrillationHz = 4.0;
+/// Half the swing of the f-waves that replace them. unit: mV
+constexpr double kFibrillationMv = 0.05;
 
 std::string spaced(std::string name) {
   std::replace(name.begin(), name.end(), '_', ' ');
@@ -143,13 +147,31 @@ OverlayPlan::OverlayPlan(const scene::Scene& scene, const World& world) : spec_(
         for (std::size_t i = 0; i < n; ++i)
           trace.values[i] = sim::activation(drive, double(i) / kSignalRateHz, model.ramp_s, beats);
       } else {
-        trace.title = "ECG (synthetic): " + spaced(t.region) + " beats";
+        trace.title = "ECG (synthetic): beats of " + spaced(t.region);
         trace.color = {120, 230, 150};
         trace.min = -0.45;
         trace.max = 1.15;
         std::vector<double> r_times = beat_onsets_s(drive, beats, model.ramp_s, clip_s);
         for (double& r_time : r_times) r_time -= kElectromechanicalDelayS;
-        for (std::size_t i = 0; i < n; ++i) trace.values[i] = overlay::ecg_value(double(i) / kSignalRateHz, r_times);
+        // P waves: from the atrial region's beats when one is named, each depolarisation the
+        // same delay before the contraction it triggers; atria faster than any sinus rhythm
+        // fibrillate or flutter: no P waves, but f-waves following their drive.
+        const int a = t.atria.empty() ? -1 : region_index(organ, t.atria);
+        const scene::Drive* atria = a >= 0 ? &organ.regions[static_cast<std::size_t>(a)].drive : nullptr;
+        const auto& atrial_beats = a >= 0 && static_cast<std::size_t>(a) < model.beat_boundaries.size()
+                                       ? model.beat_boundaries[static_cast<std::size_t>(a)]
+                                       : regular;
+        const bool fibrillating = atria && atria->rate_hz > kFibrillationHz;
+        std::vector<double> p_times;
+        if (atria && !fibrillating) {
+          p_times = beat_onsets_s(*atria, atrial_beats, model.ramp_s, clip_s);
+          for (double& p_time : p_times) p_time -= kElectromechanicalDelayS;
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+          const double time = double(i) / kSignalRateHz;
+          trace.values[i] = overlay::ecg_value(time, r_times, atria ? &p_times : nullptr);
+          if (fibrillating) trace.values[i] += kFibrillationMv * (2 * sim::activation(*atria, time, model.ramp_s, atrial_beats) - 1);
+        }
       }
     }
     traces_.push_back(std::move(trace));

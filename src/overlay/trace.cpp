@@ -143,22 +143,31 @@ void draw_trace(Image& image, const Rect& box, const Trace& trace, double now_s,
   }
 }
 
-double ecg_value(double t_s, const std::vector<double>& r_times_s) {
+double ecg_value(double t_s, const std::vector<double>& r_times_s, const std::vector<double>* p_times_s) {
   // Gaussian waves (McSharry et al. 2003 use the same sum-of-Gaussians shapes): amplitude in
   // mV, centre and width in s relative to the R peak.
   struct Wave {
     double amplitude, at_s, width_s;
   };
-  const auto it = std::lower_bound(r_times_s.begin(), r_times_s.end(), t_s - 1.0);
+  constexpr Wave kP{0.15, 0.0, 0.025};
+  constexpr double kPr = 0.16;  // Sinus rhythm's PR interval. unit: s
+  auto gauss = [](double t, const Wave& w, double centre) {
+    const double d = (t - centre - w.at_s) / w.width_s;
+    return w.amplitude * std::exp(-0.5 * d * d);
+  };
   double v = 0;
-  for (auto r = it; r != r_times_s.end() && *r < t_s + 0.4; ++r) {
+  for (auto r = std::lower_bound(r_times_s.begin(), r_times_s.end(), t_s - 1.0);
+       r != r_times_s.end() && *r < t_s + 0.4; ++r) {
     const double rr = r + 1 != r_times_s.end() ? r[1] - r[0] : r != r_times_s.begin() ? r[0] - r[-1] : 0.8;
     const double bazett = std::sqrt(std::clamp(rr, 0.25, 2.0));
-    const Wave waves[] = {{0.15, -0.16, 0.025}, {-0.12, -0.03, 0.009}, {1.0, 0.0, 0.011},
-                          {-0.25, 0.03, 0.010}, {0.30, 0.30 * bazett, 0.05 * bazett}};
-    for (const Wave& wv : waves) {
-      const double d = (t_s - *r - wv.at_s) / wv.width_s;
-      v += wv.amplitude * std::exp(-0.5 * d * d);
+    const Wave waves[] = {{-0.12, -0.03, 0.009}, {1.0, 0.0, 0.011}, {-0.25, 0.03, 0.010}, {0.30, 0.30 * bazett, 0.05 * bazett}};
+    for (const Wave& w : waves) v += gauss(t_s, w, *r);
+    if (!p_times_s) v += gauss(t_s, kP, *r - kPr);
+  }
+  if (p_times_s) {
+    for (auto p = std::lower_bound(p_times_s->begin(), p_times_s->end(), t_s - 0.2);
+         p != p_times_s->end() && *p < t_s + 0.2; ++p) {
+      v += gauss(t_s, kP, *p);
     }
   }
   return v;

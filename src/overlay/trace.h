@@ -42,10 +42,11 @@ double cursor_x(const Rect& plot, const Trace& trace, double now_s);
 void draw_trace(Image& image, const Rect& box, const Trace& trace, double now_s, plot::Font& font,
                 const Style& style = {});
 
-/// A synthetic ECG (unit: mV, roughly lead II) with one P-QRS-T complex per beat: the R peak at
-/// each of `r_times_s`, P 160 ms before it, T after a QT interval that scales with the
-/// square root of the RR interval (Bazett). A teaching marker of the beats, not a model
-/// of the heart's electrical activity.
-double ecg_value(double t_s, const std::vector<double>& r_times_s);
+/// A synthetic ECG (unit: mV, roughly lead II) with one QRS-T complex per beat: the R peak at
+/// each of `r_times_s`, T after a QT interval that scales with the square root of the RR
+/// interval (Bazett). P waves peak at `p_times_s`, or, when it is null, 160 ms before each
+/// R (a sinus rhythm's PR interval); an empty list draws none (atrial fibrillation). A
+/// teaching marker of the beats, not a model of the heart's electrical activity.
+double ecg_value(double t_s, const std::vector<double>& r_times_s, const std::vector<double>* p_times_s = nullptr);
 
 }  // namespace systole::overlay

@@ -773,7 +773,8 @@ ValueSpec<Overlay> overlay_spec() {
       field("signal", choice<TraceSignal>({{"volume", TraceSignal::kVolume}, {"activation", TraceSignal::kActivation}, {"ecg", TraceSignal::kEcg}}),
             &TraceOverlay::signal, "`volume`: the organ's enclosed volume as simulated; `activation`: a region's drive phi(t); `ecg`: a synthetic P-QRS-T at each beat of a region's drive.").required(),
       field("organ", name_text(), &TraceOverlay::organ, "The organ traced.").shown_default("the first organ"),
-      field("region", name_text(), &TraceOverlay::region, "`activation`, `ecg`: the driven region whose beats are shown."),
+      field("region", name_text(), &TraceOverlay::region, "`activation`, `ecg`: the driven region whose beats are shown (`ecg`: a QRS-T at each beat: the ventricles)."),
+      field("atria", name_text(), &TraceOverlay::atria, "`ecg`: the atrial region whose beats give the P waves; faster than 4 Hz (flutter, fibrillation): no P waves but f-waves following its drive. Default: a P wave 160 ms before each R."),
       field("position", corner(), &TraceOverlay::position, "Corner of the frame; insets in the same corner stack."),
       field("width", whole<int>(60, 1920), &TraceOverlay::width_px, "Inset width in pixels of a 720-line frame."),
       field("height", whole<int>(30, 1080), &TraceOverlay::height_px, "Inset height in pixels of a 720-line frame."),
@@ -783,6 +784,8 @@ ValueSpec<Overlay> overlay_spec() {
     const bool needs_region = t.signal != TraceSignal::kVolume;
     if (needs_region && t.region.empty())
       fail(node.origin, path, "signal activation and ecg need a region: the driven region whose beats are shown");
+    if (t.signal != TraceSignal::kEcg && !t.atria.empty())
+      fail(origin_of(node, "atria"), join(path, "atria"), "atria applies to signal ecg only");
     if (!needs_region && !t.region.empty())
       fail(origin_of(node, "region"), join(path, "region"), "signal volume is the whole organ's; region applies to activation and ecg");
   });
@@ -837,6 +840,11 @@ void check_overlay(const Node& root, const Scene& s) {
     if (!r) fail(origin_of(item, "region"), path + ".region", "organ '" + organ->name + "' has no region named '" + t.region + "'");
     if (r->drive.waveform == Waveform::kNone)
       fail(origin_of(item, "region"), path + ".region", "region '" + t.region + "' has no drive: nothing beats to trace");
+    if (t.atria.empty()) continue;
+    const Region* a = find_region(*organ, t.atria);
+    if (!a) fail(origin_of(item, "atria"), path + ".atria", "organ '" + organ->name + "' has no region named '" + t.atria + "'");
+    if (a->drive.waveform == Waveform::kNone)
+      fail(origin_of(item, "atria"), path + ".atria", "region '" + t.atria + "' has no drive: it gives no P waves");
   }
 }
 

@@ -242,6 +242,18 @@ TEST(Ecg, MarksEachBeatWithAnRPeakAfterItsPWave) {
   EXPECT_NEAR(ecg_value(0.0, r), 0.0, 0.02);
 }
 
+TEST(Ecg, PWavesComeFromTheAtriaWhenGivenAndVanishInFibrillation) {
+  const std::vector<double> r = {0.5, 1.3};
+  const std::vector<double> p = {0.25, 1.05};  // A PR of 250 ms: first-degree block.
+  EXPECT_NEAR(ecg_value(0.25, r, &p), 0.15, 0.02);
+  EXPECT_LT(std::abs(ecg_value(0.34, r, &p)), 0.02);  // None at the default 160 ms.
+  const std::vector<double> none;
+  for (double at : r) {
+    EXPECT_NEAR(ecg_value(at, r, &none), 1.0, 0.05);
+    EXPECT_LT(std::abs(ecg_value(at - 0.16, r, &none)), 0.01);
+  }
+}
+
 TEST(Title, IsCentredOnTopOfItsRect) {
   plot::Font font;
   Image image = filled(640, 360, 255);

@@ -62,6 +62,10 @@ TEST(OverlaySchema, MistakesNameTheirPlaceAndKey) {
       {"overlay: {traces: [{signal: volume, window: 3}]}\n", "overlay.traces[0].window"},
       {"overlay: {traces: [{signal: volume, window: 700 s}]}\n", "overlay.traces[0].window: 700 s is outside (0, 600] s"},
       {"overlay: {title: \"\"}\n", "overlay.title: expected text"},
+      {"overlay: {traces: [{signal: ecg, region: left_ventricle, atria: aorta}]}\n",
+       "overlay.traces[0].atria: region 'aorta' has no drive: it gives no P waves"},
+      {"overlay: {traces: [{signal: activation, region: left_ventricle, atria: left_ventricle}]}\n",
+       "overlay.traces[0].atria: atria applies to signal ecg only"},
   };
   for (const auto& c : cases) {
     const auto f = load_error(kOrgan + c.yaml);
