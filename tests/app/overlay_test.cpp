@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+#include "app/bake.h"
+#include "app/progress.h"
 #include "app/render_clip.h"
 #include "app/run.h"
 #include "app/world.h"
@@ -214,17 +216,20 @@ TEST(OverlayPlan, LabelsDoNotHopFromFrameToFrameInTheShippedScene) {
   EXPECT_LT(largest, 4.0) << "a label jumped";
 }
 
-TEST(OverlayPlan, FramesAreTheSameBitsOverlappedSerialAndSelected) {
+TEST(OverlayPlan, FramesAreTheSameBitsOverlappedSerialSelectedAndBaked) {
   namespace fs = std::filesystem;
   const auto dir = scratch("overlay_bits");
   const auto s = scene::load(source("scenes/heart-labels.yaml"),
                              {"output.width=320", "output.height=240", "output.duration=1 s"});
-  const std::vector<std::pair<std::string, std::vector<int>>> runs = {{"overlap", {}}, {"serial", {}}, {"selected", {12, 25}}};
+  app::bake_clip(s, dir / "clip.bake", app::ProgressStyle::kNone, "test");
+  const std::vector<std::pair<std::string, std::vector<int>>> runs = {
+      {"overlap", {}}, {"serial", {}}, {"selected", {12, 25}}, {"baked", {12, 25}}};
   for (const auto& [name, frames] : runs) {
     app::RenderRequest request;
     request.png_dir = dir / name;
     request.overlap = name != "serial";
     request.frames = frames;
+    if (name == "baked") request.from_bake = dir / "clip.bake";
     app::render_clip(s, request);
   }
   int compared = 0;
@@ -234,6 +239,8 @@ TEST(OverlayPlan, FramesAreTheSameBitsOverlappedSerialAndSelected) {
     if (fs::exists(dir / "selected" / name)) {
       // The volume trace of a selected frame holds the frames stepped through unrendered.
       EXPECT_EQ(read_file(dir / "selected" / name), read_file(entry.path())) << name << " differs when selected";
+      // From a bake, the volume history is read from the bake's frames.
+      EXPECT_EQ(read_file(dir / "baked" / name), read_file(entry.path())) << name << " differs from a bake";
       ++compared;
     }
   }
