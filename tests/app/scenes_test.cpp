@@ -36,7 +36,7 @@ TEST(Scenes, TheExpectedScenesShip) {
   std::vector<std::string> names;
   for (const fs::path& p : shipped_scenes()) names.push_back(p.stem().string());
   for (const char* name : {"heart", "heart-tachycardia", "heart-afib", "heart-infarct", "heart-compare", "lungs",
-                           "kidney", "liver", "own-mesh"}) {
+                           "kidney", "liver", "own-mesh", "heart-labels", "heart-afib-ecg"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << "scenes/" << name << ".yaml";
   }
 }
