@@ -36,8 +36,7 @@ int fitting_size(plot::Font& font, const std::string& text, int px, double max_w
 
 /// Darkens the rectangle [x0, x1) x [y0, y1) towards black by `alpha`.
 void shade(Image& image, int x0, int y0, int x1, int y1, double alpha) {
-  for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y)
-    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) plot::blend_pixel(image, x, y, {0, 0, 0}, alpha);
+  plot::Canvas(image).fill(x0, y0, x1, y1, {0, 0, 0}, alpha);
 }
 
 }  // namespace
@@ -74,14 +73,15 @@ void CardPainter::draw_card(int k, Image& image) {
   double block = 0;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     px[i] = fitting_size(*font_, lines[i], i == 0 ? title_px : std::max(6, title_px * 11 / 20), 0.9 * image.width);
-    block += font_->line_height() * (i == 0 ? 1.25 : 1.1);
+    block += (font_->ascent() + font_->descent()) * (i == 0 ? 1.25 : 1.1);
   }
   double top = (image.height - block) / 2;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     font_->size(px[i]);
     const double x = (image.width - font_->width(lines[i])) / 2;
-    font_->draw(image, lines[i], x, top + font_->ascender(), rgb_of(card.color), opacity);
-    top += font_->line_height() * (i == 0 ? 1.25 : 1.1);
+    plot::Canvas canvas(image);
+    font_->draw(canvas, lines[i], x, top + font_->ascent(), rgb_of(card.color), false, opacity);
+    top += (font_->ascent() + font_->descent()) * (i == 0 ? 1.25 : 1.1);
   }
 }
 
@@ -94,12 +94,13 @@ void CardPainter::draw_captions(int clip_frame, Image& image) {
     if (opacity <= 0) continue;
     const int px = fitting_size(*font_, caption.text, std::max(6, static_cast<int>(std::lround(caption.size * image.height))),
                                 0.9 * image.width);
-    const double w = font_->width(caption.text), h = font_->line_height(), pad = 0.35 * px;
+    const double w = font_->width(caption.text), h = (font_->ascent() + font_->descent()), pad = 0.35 * px;
     const double x = (image.width - w) / 2, top = bottom - h;
     // A dark band keeps the words readable over a bright organ.
     shade(image, static_cast<int>(std::floor(x - pad)), static_cast<int>(std::floor(top - pad / 2)),
           static_cast<int>(std::ceil(x + w + pad)), static_cast<int>(std::ceil(bottom + pad / 2)), 0.55 * opacity);
-    font_->draw(image, caption.text, x, top + font_->ascender(), rgb_of(caption.color), opacity);
+    plot::Canvas canvas(image);
+    font_->draw(canvas, caption.text, x, top + font_->ascent(), rgb_of(caption.color), false, opacity);
     bottom = top - pad * 1.5;
   }
 }

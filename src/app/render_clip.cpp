@@ -14,6 +14,7 @@
 #include "app/cards.h"
 #include "app/frame_list.h"
 #include "app/frame_pipeline.h"
+#include "app/overlay_plan.h"
 #include "app/progress.h"
 #include "app/world.h"
 #include "common/error.h"
@@ -245,6 +246,23 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
   CardPainter cards(scene);
   const int video_offset = video && frames.front() == 0 ? cards.card_frames() : 0;
 
+  // Overlays: anchors captured with the positions (produce), handed on through the render
+  // stage's slots (produce may refill its slot before consume is done), drawn after FXAA.
+  OverlayPlan overlay(scene, world);
+  std::vector<OverlayFrame> overlay_produced(kPipelineDepth), overlay_rendered(kPipelineDepth);
+  Eigen::Matrix3Xd volume_positions;
+  if (!overlay.volume_organs().empty() && request.from_bake.empty()) {
+    const auto record = [&](int frame) {
+      for (int o : overlay.volume_organs()) {
+        render_positions(world.organs[static_cast<std::size_t>(o)], volume_positions);
+        overlay.record_volume(o, frame, volume_positions);
+      }
+    };
+    if (world.frames_done == 0) record(0);
+    world.after_frame = record;
+  }
+  std::vector<const Eigen::Matrix3Xd*> frame_positions(world.organs.size());
+
   std::vector<Image> images(kPipelineDepth, Image(out.width, out.height));
   render::Fxaa fxaa;
   std::optional<BakeReader> bake;
@@ -272,8 +290,22 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
       mesh::vertex_normals(x, static_cast<int>(n), world.organs[o].geometry.mesh.surface.triangles,
                            buf.normals.data());
       if (dynamic[o]) map_colors(*dynamic[o], world.organs[o], scene.organs[o], f / out.fps, buf);
+      frame_positions[o] = &buf.mesh_positions;
     }
     times.simulate_s += seconds_since(t0);
+    if (!overlay.empty()) {
+      t0 = Clock::now();
+      // From a bake, the volume history comes from the bake's frames (every one up to this).
+      for (int o : bake ? overlay.volume_organs() : std::vector<int>{}) {
+        for (int g = 0; g <= f; ++g) {
+          if (overlay.has_volume(o, g)) continue;
+          bake->read(g, o, volume_positions);
+          overlay.record_volume(o, g, volume_positions);
+        }
+      }
+      overlay.capture(f, frame_positions, overlay_produced[static_cast<std::size_t>(slot)]);
+      times.simulate_s += seconds_since(t0);  // This thread's own sum: the capture is counted with it.
+    }
   };
   stages.render = [&](int i, int slot) {
     auto t0 = Clock::now();
@@ -289,12 +321,19 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
     t0 = Clock::now();
     renderer.read_frame(images[static_cast<std::size_t>(slot)]);
     times.readback_s += seconds_since(t0);
+    if (!overlay.empty()) overlay_rendered[static_cast<std::size_t>(slot)] = overlay_produced[static_cast<std::size_t>(slot)];
   };
   stages.consume = [&](int i, int slot) {
     Image& image = images[static_cast<std::size_t>(slot)];
     auto t0 = Clock::now();
     if (out.antialias == scene::Antialias::kFxaa) fxaa.apply(image);
     times.antialias_s += seconds_since(t0);
+    if (!overlay.empty()) {
+      // After FXAA: text and lines stay crisp.
+      t0 = Clock::now();
+      overlay.draw(image, overlay_rendered[static_cast<std::size_t>(slot)]);
+      times.overlay_s += seconds_since(t0);
+    }
     t0 = Clock::now();
     const int f = frames[static_cast<std::size_t>(i)];
     cards.draw_captions(f, image);
@@ -327,12 +366,14 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
 
 std::string describe(const StageTimes& t) {
   const double n = t.frames > 0 ? t.frames : 1;
+  char overlay[64] = "";
+  if (t.overlay_s > 0) std::snprintf(overlay, sizeof overlay, ", overlay %.2f ms/frame", 1e3 * t.overlay_s / n);
   char text[512];
   std::snprintf(text, sizeof text,
                 "%d frames in %.2f s: simulate %.2f ms/frame, render %.2f ms/frame, read back %.2f ms/frame, "
-                "anti-alias %.2f ms/frame, encode %.2f ms/frame (stages overlapped)",
+                "anti-alias %.2f ms/frame%s, encode %.2f ms/frame (stages overlapped)",
                 t.frames, t.wall_s, 1e3 * t.simulate_s / n, 1e3 * t.render_s / n, 1e3 * t.readback_s / n,
-                1e3 * t.antialias_s / n, 1e3 * t.encode_s / n);
+                1e3 * t.antialias_s / n, overlay, 1e3 * t.encode_s / n);
   std::string line = text;
   if (t.card_frames > 0) line += "; encode includes " + std::to_string(t.card_frames) + " title-card frames";
   return line;

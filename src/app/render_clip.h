@@ -43,6 +43,7 @@ struct StageTimes {
   double render_s = 0;     ///< unit: s
   double readback_s = 0;   ///< unit: s
   double antialias_s = 0;  ///< The FXAA pass (render/fxaa.h), if the scene asks for it. unit: s
+  double overlay_s = 0;    ///< Drawing the teaching overlays (app/overlay_plan.h) on the frames. unit: s
   double encode_s = 0;     ///< unit: s (video and PNG writing)
   double wall_s = 0;       ///< Whole run including set-up. unit: s
 };

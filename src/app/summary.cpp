@@ -1,6 +1,8 @@
 #include "app/summary.h"
 
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/render_clip.h"
 #include "sim/step_size.h"
@@ -88,6 +90,28 @@ std::string summarize(const scene::Scene& scene, const World& world) {
     for (const auto& c : scene.cards) cards_s += c.duration_s;
     s << "  " << scene.cards.size() << " title card(s) (" << cards_s << " s, before the clip), " << scene.captions.size()
       << " caption(s)\n";
+  }
+  const scene::Overlay& ov = scene.overlay;
+  if (!ov.empty()) {
+    std::vector<std::string> parts;
+    if (!ov.title.empty()) parts.push_back("title \"" + ov.title + "\"");
+    if (ov.labels.enabled) {
+      parts.push_back("labels of " +
+                      (ov.labels.regions.empty() ? std::string("every region") : std::to_string(ov.labels.regions.size()) + " regions") +
+                      (ov.labels.organ.empty() ? "" : " of " + ov.labels.organ));
+    }
+    if (ov.legend.enabled) parts.push_back("legend of region colours");
+    for (const auto& t : ov.traces) {
+      std::ostringstream trace;
+      trace << (t.signal == scene::TraceSignal::kVolume ? "volume" : t.signal == scene::TraceSignal::kEcg ? "ecg" : "activation")
+            << (t.region.empty() ? "" : " of " + t.region) << " trace (";
+      if (t.window_s > 0) trace << t.window_s << " s sweep)";
+      else trace << "whole clip)";
+      parts.push_back(trace.str());
+    }
+    s << "overlay:";
+    for (std::size_t i = 0; i < parts.size(); ++i) s << (i ? "; " : " ") << parts[i];
+    s << " (docs/teaching-visuals.md)\n";
   }
   return s.str();
 }

@@ -101,6 +101,7 @@ void advance_to_frame(World& w, int frame) {
         throw Error(ExitCode::kDiverged, m.str());
       }
     }
+    if (w.after_frame) w.after_frame(w.frames_done + 1);
   }
 }
 

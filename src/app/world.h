@@ -2,6 +2,7 @@
 // The simulated scene: every organ's geometry, body model and state, advanced together
 // on one clock.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct World {
   int start_frame = 0;      ///< Frames simulated before the clip's frame 0 (a loop's settling). unit: frames
   int frames_done = 0;      ///< Frames the world has been advanced through, counting start_frame.
   std::string step_reason;  ///< Why dt and substeps are what they are (for `validate`).
+  /// Called after every frame advance_to_frame steps through (with that frame's number),
+  /// also frames that are not rendered: a trace of a simulated signal needs them all.
+  std::function<void(int frame)> after_frame;
 };
 
 /// Loads or generates every organ and builds its body. The step is the scene's dt (or, for

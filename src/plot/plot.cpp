@@ -13,57 +13,24 @@
 namespace systole::plot {
 namespace {
 
-/// An image with blending: every drawing call takes a coverage in [0, 1] per pixel.
-class Canvas {
- public:
-  explicit Canvas(Image& image) : image_(image) {}
-
-  void blend(int x, int y, const Rgb& c, double coverage) { blend_pixel(image_, x, y, c, coverage); }
-
-  /// Antialiased segment of the given width: coverage from the distance to the segment.
-  void line(double x0, double y0, double x1, double y1, const Rgb& c, double width) {
-    const double r = 0.5 * width;
-    const int xa = int(std::floor(std::min(x0, x1) - r - 1)), xb = int(std::ceil(std::max(x0, x1) + r + 1));
-    const int ya = int(std::floor(std::min(y0, y1) - r - 1)), yb = int(std::ceil(std::max(y0, y1) + r + 1));
-    const double dx = x1 - x0, dy = y1 - y0, len2 = dx * dx + dy * dy;
-    for (int y = std::max(ya, 0); y <= std::min(yb, image_.height - 1); ++y) {
-      for (int x = std::max(xa, 0); x <= std::min(xb, image_.width - 1); ++x) {
-        const double px = x + 0.5 - x0, py = y + 0.5 - y0;
-        const double t = len2 > 0 ? std::clamp((px * dx + py * dy) / len2, 0.0, 1.0) : 0.0;
-        const double d = std::hypot(px - t * dx, py - t * dy);
-        blend(x, y, c, r + 0.5 - d);
+/// A marker of diameter `size` centred on (cx, cy). unit: px
+void draw_marker(Canvas& canvas, double cx, double cy, Marker m, double size, const Rgb& c) {
+  const double r = 0.5 * size;
+  for (int y = int(cy - r - 2); y <= int(cy + r + 2); ++y) {
+    for (int x = int(cx - r - 2); x <= int(cx + r + 2); ++x) {
+      const double px = x + 0.5 - cx, py = y + 0.5 - cy;
+      double d = 0;  // Signed distance to the outline, negative inside.
+      switch (m) {
+        case Marker::kNone: return;
+        case Marker::kCircle: d = std::hypot(px, py) - r; break;
+        case Marker::kSquare: d = std::max(std::abs(px), std::abs(py)) - 0.8 * r; break;
+        case Marker::kDiamond: d = (std::abs(px) + std::abs(py) - 1.2 * r) / std::sqrt(2.0); break;
+        case Marker::kRing: d = std::abs(std::hypot(px, py) - r) - 1.0; break;
       }
+      canvas.blend(x, y, c, 0.5 - d);
     }
   }
-
-  void marker(double cx, double cy, Marker m, double size, const Rgb& c) {
-    const double r = 0.5 * size;
-    for (int y = int(cy - r - 2); y <= int(cy + r + 2); ++y) {
-      for (int x = int(cx - r - 2); x <= int(cx + r + 2); ++x) {
-        const double px = x + 0.5 - cx, py = y + 0.5 - cy;
-        double d = 0;  // Signed distance to the outline, negative inside.
-        switch (m) {
-          case Marker::kNone: return;
-          case Marker::kCircle: d = std::hypot(px, py) - r; break;
-          case Marker::kSquare: d = std::max(std::abs(px), std::abs(py)) - 0.8 * r; break;
-          case Marker::kDiamond: d = (std::abs(px) + std::abs(py) - 1.2 * r) / std::sqrt(2.0); break;
-          case Marker::kRing: d = std::abs(std::hypot(px, py) - r) - 1.0; break;
-        }
-        blend(x, y, c, 0.5 - d);
-      }
-    }
-  }
-
-  void fill(int x0, int y0, int x1, int y1, const Rgb& c) {
-    for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) blend(x, y, c, 1.0);
-    }
-  }
-
- private:
-  Image& image_;
-};
-
+}
 
 std::string tick_text(double v) {
   char text[32];
@@ -160,23 +127,23 @@ Image render(const Figure& figure) {
     const double px = to_px(t, y_axis.min).first;
     canvas.line(px, top, px, bottom, grid, 1);
     const std::string text = tick_text(t);
-    font.draw(image, text, px - font.width(text) / 2, bottom + 22, ink);
+    font.draw(canvas, text, px - font.width(text) / 2, bottom + 22, ink);
   }
   for (double t : ticks(y_axis)) {
     const double py = to_px(x_axis.min, t).second;
     canvas.line(left, py, right, py, grid, 1);
     const std::string text = tick_text(t);
-    font.draw(image, text, left - 8 - font.width(text), py + 5, ink);
+    font.draw(canvas, text, left - 8 - font.width(text), py + 5, ink);
   }
   canvas.line(left, bottom, right, bottom, ink, 1.5);
   canvas.line(left, top, left, bottom, ink, 1.5);
 
   font.size(17);
-  font.draw(image, x_axis.label, (left + right) / 2.0 - font.width(x_axis.label) / 2, figure.height - 25, ink);
-  font.draw(image, y_axis.label, 28, (top + bottom) / 2.0 + font.width(y_axis.label) / 2, ink, 1, true);
+  font.draw(canvas, x_axis.label, (left + right) / 2.0 - font.width(x_axis.label) / 2, figure.height - 25, ink);
+  font.draw(canvas, y_axis.label, 28, (top + bottom) / 2.0 + font.width(y_axis.label) / 2, ink, true);
   if (!figure.title.empty()) {
     font.size(20);
-    font.draw(image, figure.title, (left + right) / 2.0 - font.width(figure.title) / 2, 35, ink);
+    font.draw(canvas, figure.title, (left + right) / 2.0 - font.width(figure.title) / 2, 35, ink);
   }
 
   font.size(12);
@@ -188,8 +155,8 @@ Image render(const Figure& figure) {
     }
     for (const auto& p : s.points) {
       const auto [px, py] = to_px(p.x, p.y);
-      canvas.marker(px, py, s.marker, s.marker_px, s.color);
-      if (!p.label.empty()) font.draw(image, p.label, px + s.marker_px / 2 + 3, py - 3, ink);
+      draw_marker(canvas, px, py, s.marker, s.marker_px, s.color);
+      if (!p.label.empty()) font.draw(canvas, p.label, px + s.marker_px / 2 + 3, py - 3, ink);
     }
   }
 
@@ -207,8 +174,8 @@ Image render(const Figure& figure) {
     for (std::size_t i = 0; i < listed.size(); ++i) {
       const double cy = y0 + 4 + row * (i + 0.5);
       if (listed[i]->line) canvas.line(x0 + 6, cy, x0 + 30, cy, listed[i]->color, 2);
-      canvas.marker(x0 + 18, cy, listed[i]->marker, listed[i]->marker_px, listed[i]->color);
-      font.draw(image, listed[i]->name, x0 + 36, cy + 5, ink);
+      draw_marker(canvas, x0 + 18, cy, listed[i]->marker, listed[i]->marker_px, listed[i]->color);
+      font.draw(canvas, listed[i]->name, x0 + 36, cy + 5, ink);
     }
   }
   return image;

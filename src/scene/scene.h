@@ -375,6 +375,54 @@ struct Caption {
   Origin origin;
 };
 
+// Teaching overlays drawn on each frame (src/overlay/, docs/teaching-visuals.md). Sizes are
+// pixels of a 720-line frame, scaled with output.height.
+
+enum class Corner { kTopLeft, kTopRight, kBottomLeft, kBottomRight };
+
+struct LabelsOverlay {
+  bool enabled = false;
+  std::string organ;                 ///< Empty: every organ.
+  std::vector<std::string> regions;  ///< Empty: every region (`all`).
+  int size_px = 16;                  ///< Text height. unit: px at 720 lines
+  Origin origin;
+};
+
+struct LegendOverlay {
+  bool enabled = false;
+  std::string organ;                 ///< Empty: the first organ.
+  Corner position = Corner::kTopLeft;
+  int size_px = 14;                  ///< unit: px at 720 lines
+  Origin origin;
+};
+
+enum class TraceSignal {
+  kVolume,      ///< The organ's enclosed volume, as simulated.
+  kActivation,  ///< A region's drive phi(t).
+  kEcg,         ///< A synthetic P-QRS-T complex at each beat of a region's drive.
+};
+
+struct TraceOverlay {
+  TraceSignal signal = TraceSignal::kVolume;
+  std::string organ;                 ///< Empty: the first organ.
+  std::string region;                ///< kActivation, kEcg: the region whose drive is shown (kEcg: the ventricles').
+  std::string atria;                 ///< kEcg: a region whose beats give the P waves; empty: 160 ms before each R.
+  Corner position = Corner::kBottomRight;
+  int width_px = 360, height_px = 110;  ///< unit: px at 720 lines
+  double window_s = 3;               ///< Sweep width; 0: the whole clip. unit: s
+  Origin origin;
+};
+
+struct Overlay {
+  std::string title;                 ///< Across the top; empty: none.
+  int title_size_px = 26;            ///< unit: px at 720 lines
+  LabelsOverlay labels;
+  LegendOverlay legend;
+  std::vector<TraceOverlay> traces;  ///< Insets; several in one corner stack.
+
+  bool empty() const { return title.empty() && !labels.enabled && !legend.enabled && traces.empty(); }
+};
+
 struct Scene {
   std::string path;         ///< The YAML file it came from.
   std::string name;         ///< File stem: names default outputs.
@@ -390,6 +438,7 @@ struct Scene {
   Output output;
   std::vector<Card> cards;         ///< Shown in order before the clip.
   std::vector<Caption> captions;
+  Overlay overlay;
 };
 
 }  // namespace systole::scene

@@ -36,7 +36,8 @@ TEST(Scenes, TheExpectedScenesShip) {
   std::vector<std::string> names;
   for (const fs::path& p : shipped_scenes()) names.push_back(p.stem().string());
   for (const char* name : {"heart", "heart-tachycardia", "heart-afib", "heart-infarct", "heart-compare", "lungs",
-                           "kidney", "liver", "own-mesh", "heart-slowmo-loop", "lungs-breath-gif"}) {
+                           "kidney", "liver", "own-mesh", "heart-slowmo-loop", "lungs-breath-gif",
+                           "heart-labels", "heart-afib-ecg"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << "scenes/" << name << ".yaml";
   }
 }
