@@ -26,7 +26,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     app::check_scene_limits(scene, {scene.output.frame_count(), true, false}, limits);
     app::World world = app::build_world(scene);
     app::check_world_limits(scene, world, limits);
-    app::advance_to_frame(world, std::min(2, scene.output.frame_count()));
+    // The implicit solver (Eigen CG) runs ~170x slower under libFuzzer's coverage
+    // instrumentation than in Release (69 s for two frames of a kidney and a liver): stepping
+    // it would time such inputs out and stall the run. Its scene and model are still built;
+    // tests/sim covers its stepping, under the sanitizers too.
+    if (scene.solver.method != scene::SolverMethod::kImplicit) app::advance_to_frame(world, std::min(2, scene.output.frame_count()));
   } catch (const Error&) {
     // A clear error is the right answer to bad input.
   }

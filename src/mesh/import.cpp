@@ -13,10 +13,24 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 #include <system_error>
 
 #include "common/error.h"
 #include "mesh/weld.h"
+
+// assimp 5.2 as Debian builds it (ASSIMP_BUILD_DEBUG) ends the process on an internal
+// assertion that malformed files reach: fuzz_mesh found a PLY whose broken face list trips
+// TriangulateProcess (fuzz/regressions/mesh/). This definition takes the place of the
+// library's (ELF symbol interposition: libassimp calls it through its PLT, and the
+// executable's definition wins) and throws instead, which Importer::ReadFile catches and
+// reports as a failed read: the file is refused with an error rather than aborting.
+namespace Assimp {
+void aiAssertViolation(const char* expression, const char* file, int line) {
+  throw std::runtime_error(std::string("internal check failed reading the file (") + expression + " at " + file + ":" +
+                           std::to_string(line) + ")");
+}
+}  // namespace Assimp
 
 namespace systole::mesh {
 namespace {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "common/error.h"
@@ -187,6 +189,27 @@ TEST(Import, BinaryGltfHeaderClaimingMoreThanTheFileHoldsIsDataError) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::kDataError);
     EXPECT_EQ(std::string(e.what()).find("header gives a length"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Import, AMalformedFileThatTripsAnAssimpAssertionIsDataErrorNotAnAbort) {
+  // fuzz_mesh's finding: a PLY whose face list is broken mid-header made assimp 5.2 (built
+  // with its assertions on) abort the process in TriangulateProcess.
+  const auto file = testing::scratch("assert.ply");
+  // The fuzz input: a format byte (PLY), then the file.
+  std::ifstream in(std::string(SYSTOLE_SOURCE_DIR) + "/fuzz/regressions/mesh/ply-broken-face-list-trips-an-assimp-assertion",
+                   std::ios::binary);
+  const std::string input((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(input.size(), 100u);
+  const std::string ply = input.substr(1);
+  testing::write_text(file, ply);
+  try {
+    import_mesh(file);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kDataError);
+    EXPECT_NE(std::string(e.what()).find("assert.ply: cannot read as a mesh (assimp: internal check failed"), std::string::npos)
+        << e.what();
   }
 }
 
