@@ -17,15 +17,6 @@
 namespace systole::app {
 namespace {
 
-const char* method_name(scene::SolverMethod m) {
-  switch (m) {
-    case scene::SolverMethod::kXpbd: return "xpbd";
-    case scene::SolverMethod::kExplicit: return "explicit";
-    case scene::SolverMethod::kImplicit: return "implicit";
-  }
-  return "?";
-}
-
 /// "1/240 s" for steps that are a whole fraction of a second, else milliseconds.
 std::string step_text(double dt_s) {
   char text[32];
@@ -189,13 +180,13 @@ BenchResult compare(const BenchConfig& config, const Trace& trace, const Trace& 
 
 /// Series of the plot: one per solver and model kind.
 std::string series_name(const BenchConfig& c) {
-  return std::string(method_name(c.method)) + (c.lattice > 0 ? " lattice" : " full");
+  return std::string(scene::method_name(c.method)) + (c.lattice > 0 ? " lattice" : " full");
 }
 
 }  // namespace
 
 std::string BenchConfig::label() const {
-  std::string text = method_name(method);
+  std::string text = scene::method_name(method);
   text += " " + (dt_s > 0 ? step_text(dt_s) : std::string("auto"));
   if (method == scene::SolverMethod::kXpbd && dt_s > 0) text += " x" + std::to_string(substeps);
   text += lattice > 0 ? " lattice " + std::to_string(lattice) : std::string(" full");
@@ -319,7 +310,7 @@ void write_csv(const std::filesystem::path& path, const BenchReport& report) {
   char line[512];
   for (const auto& r : report.results) {
     std::snprintf(line, sizeof line, "%s,%s,%.9g,%d,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%d,", r.config.label().c_str(),
-                  method_name(r.config.method), r.dt_s, r.substeps, r.config.lattice, r.particles, r.springs,
+                  scene::method_name(r.config.method), r.dt_s, r.substeps, r.config.lattice, r.particles, r.springs,
                   r.rms_error_pct, r.max_error_pct, r.volume_error_pct, r.amplitude_error_pct, r.phase_error_ms,
                   r.cost_ms_per_s, r.realtime_factor(), r.pareto ? 1 : 0);
     std::string why = r.diverged;

@@ -8,18 +8,6 @@
 #include "sim/step_size.h"
 
 namespace systole::app {
-namespace {
-
-const char* method_name(scene::SolverMethod m) {
-  switch (m) {
-    case scene::SolverMethod::kXpbd: return "xpbd";
-    case scene::SolverMethod::kExplicit: return "explicit";
-    case scene::SolverMethod::kImplicit: return "implicit";
-  }
-  return "?";
-}
-
-}  // namespace
 
 std::string summarize(const scene::Scene& scene, const World& world) {
   std::ostringstream s;
@@ -72,7 +60,7 @@ std::string summarize(const scene::Scene& scene, const World& world) {
     s << "\n  cost estimate: " << cost * 1e3 << " ms per simulated second on one thread (" << (cost > 0 ? 1.0 / cost : 0.0)
       << "x real time; `systole bench` measures)\n";
   }
-  s << "solver " << method_name(scene.solver.method) << ": dt " << world.dt_s * 1e3 << " ms ("
+  s << "solver " << scene::method_name(scene.solver.method) << ": dt " << world.dt_s * 1e3 << " ms ("
     << world.steps_per_frame << " steps per frame)";
   for (const auto& body : world.organs) s << ", " << body.model.name << " " << body.model.substeps << " substeps";
   s << "\n  why: " << world.step_reason << "\n";

@@ -215,6 +215,16 @@ struct Organ {
 
 enum class SolverMethod { kXpbd, kExplicit, kImplicit };
 
+/// The name the scene gives a solver ("xpbd", "explicit", "implicit").
+inline const char* method_name(SolverMethod m) {
+  switch (m) {
+    case SolverMethod::kXpbd: return "xpbd";
+    case SolverMethod::kExplicit: return "explicit";
+    case SolverMethod::kImplicit: return "implicit";
+  }
+  return "?";
+}
+
 struct Solver {
   SolverMethod method = SolverMethod::kXpbd;
   bool auto_dt = false;        ///< Choose dt from the drive and stiffness (sim core issue).
