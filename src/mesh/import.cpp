@@ -15,6 +15,7 @@
 #include <iterator>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <system_error>
 
 #include "common/error.h"
@@ -109,9 +110,18 @@ void check_ply_header(const std::filesystem::path& file) {
   std::string extension = file.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension != ".ply" && !head.starts_with("ply")) return;
-  const std::size_t end = head.find("end_header");
+  // `end_header` must be a line of its own: assimp's reader looks for it as a line, and
+  // never ends on a header where it only appears inside another word ("floatend_header").
+  std::size_t end = std::string::npos;
+  for (std::size_t at = head.find("\nend_header"); at != std::string::npos; at = head.find("\nend_header", at + 1)) {
+    const std::size_t after = at + 11;
+    if (after == head.size() || std::string_view(" \t\r\n").find(head[after]) != std::string_view::npos) {
+      end = at + 1;
+      break;
+    }
+  }
   if (end == std::string::npos) {
-    throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (PLY header without end_header)");
+    throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (PLY header without an end_header line)");
   }
   std::istringstream header(head.substr(0, end));
   bool ascii = false;

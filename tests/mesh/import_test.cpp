@@ -138,15 +138,17 @@ TEST(Import, FileWithoutTrianglesIsDataError) {
 TEST(Import, PlyHeaderWithoutEndHeaderIsDataErrorNotAHang) {
   const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                              "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
-  for (const char* name : {"no_end_header.ply", "no_end_header_named_as_obj.obj"}) {
+  // Also when end_header only appears inside another word (fuzz/regressions/mesh/ply-end-header-inside-a-word-hang).
+  for (const auto& [name, end] : {std::pair{"no_end_header.ply", ""}, {"no_end_header_named_as_obj.obj", ""},
+                                  {"end_header_in_a_word.ply", "property floatend_header\n"}}) {
     const auto file = testing::scratch(name);
-    testing::write_text(file, header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    testing::write_text(file, header + end + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
     try {
       import_mesh(file);
       ADD_FAILURE() << name << ": expected an error";
     } catch (const Error& e) {
       EXPECT_EQ(e.code(), ExitCode::kDataError) << e.what();
-      EXPECT_NE(std::string(e.what()).find("PLY header without end_header"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("PLY header without an end_header line"), std::string::npos) << e.what();
     }
   }
 }
@@ -218,11 +220,11 @@ TEST(Import, AMalformedFileThatTripsAnAssimpAssertionIsDataErrorNotAnAbort) {
 }
 
 TEST(Import, AsciiPlyWithANulByteIsDataErrorNotAHang) {
-  // fuzz_mesh's finding: a NUL right after end_header sent assimp's ASCII PLY reader into
-  // an endless loop.
+  // fuzz_mesh's finding: "end_header\x05\0" sent assimp's ASCII PLY reader into an endless
+  // loop; no ASCII PLY holds a NUL.
   const auto file = testing::scratch("nul.ply");
   const std::string text = std::string("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header") +
+                                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n") +
                            std::string("\x05\0\0\0\n", 5) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   testing::write_text(file, text);
   try {
