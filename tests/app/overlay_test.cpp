@@ -16,6 +16,7 @@
 #include "app/run.h"
 #include "app/world.h"
 #include "render/camera_matrices.h"
+#include "render/color_map.h"
 #include "scene/load.h"
 
 namespace systole::test {
@@ -178,11 +179,15 @@ TEST(OverlayPlan, LegendListsEachRegionColour) {
   Image image(kWidth, kHeight);
   plan.draw(image, capture(plan, 0, x));
   const auto& entries = plan.legend_entries();
+  // The scene colours by region: each swatch is the colour the renderer paints its region
+  // with (the region's own colour, else the palette's).
+  const auto painted = render::region_legend(s.organs[0]);
   ASSERT_EQ(entries.size(), s.organs[0].regions.size());  // Every region coloured: no body entry.
+  ASSERT_EQ(painted.size(), entries.size());
   plot::Font font;
   font.size(overlay::scaled_px(s.overlay.legend.size_px, kHeight));
   for (std::size_t i = 0; i < entries.size(); ++i) {
-    const auto& c = s.organs[0].regions[i].color;
+    const auto& c = painted[i].color;
     double sx = 0, sy = 0;
     overlay::swatch_center(plan.legend_box(), static_cast<int>(i), font, sx, sy);
     const std::uint8_t* p = image.pixel(int(sx), int(sy));
