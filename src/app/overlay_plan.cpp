@@ -1,6 +1,7 @@
 #include "app/overlay_plan.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -228,11 +229,13 @@ void OverlayPlan::capture(int frame, const std::vector<const Eigen::Matrix3Xd*>&
   out.label_visible.assign(targets_.size(), 1);
   // Each view's camera where it is at this frame's time (orbits and paths move it); screen
   // x and y do not depend on the depth range, so any will do.
-  std::vector<Eigen::Matrix4d> view_projection;
-  for (const ViewFrame& v : views_) {
-    const scene::Camera camera = camera_at(v.camera, out.time_s);
-    view_projection.push_back(render::perspective(camera.fov_rad, double(v.rect.width) / v.rect.height, render::DepthRange{}) *
-                              render::look_at(camera));
+  // Fixed storage: capture runs every frame (the schema allows at most 16 views).
+  std::array<Eigen::Matrix4d, 16> view_projection;
+  for (std::size_t v = 0; v < views_.size(); ++v) {
+    const scene::Camera camera = camera_at(views_[v].camera, out.time_s);
+    view_projection[v] = render::perspective(camera.fov_rad, double(views_[v].rect.width) / views_[v].rect.height,
+                                             render::DepthRange{}) *
+                         render::look_at(camera);
   }
   int view = 0;
   const auto project = [&](const Eigen::Vector3d& p, double& x, double& y) {

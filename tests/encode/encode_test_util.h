@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -107,111 +108,90 @@ struct YuvFrame {
   int V(int px, int py) const { return v[static_cast<std::size_t>(py / 2) * (width / 2) + px / 2]; }
 };
 
+/// Calls `take` with every decoded frame of the file's first video stream, in order.
+inline void for_each_decoded_frame(const fs::path& file, const std::function<void(const AVFrame&)>& take) {
+  AVFormatContext* fmt = nullptr;
+  if (avformat_open_input(&fmt, file.c_str(), nullptr, nullptr) < 0) return;
+  avformat_find_stream_info(fmt, nullptr);
+  const AVCodec* codec = nullptr;
+  const int index = av_find_best_stream(fmt, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0);
+  AVCodecContext* dec = avcodec_alloc_context3(codec);
+  avcodec_parameters_to_context(dec, fmt->streams[index]->codecpar);
+  avcodec_open2(dec, codec, nullptr);
+  AVPacket* pkt = av_packet_alloc();
+  AVFrame* frame = av_frame_alloc();
+  auto drain = [&] {
+    while (avcodec_receive_frame(dec, frame) == 0) {
+      take(*frame);
+      av_frame_unref(frame);
+    }
+  };
+  while (av_read_frame(fmt, pkt) >= 0) {
+    if (pkt->stream_index == index) {
+      avcodec_send_packet(dec, pkt);
+      drain();
+    }
+    av_packet_unref(pkt);
+  }
+  avcodec_send_packet(dec, nullptr);
+  drain();
+  av_frame_free(&frame);
+  av_packet_free(&pkt);
+  avcodec_free_context(&dec);
+  avformat_close_input(&fmt);
+}
+
 /// Decodes every frame of the file's first video stream with libavcodec (yuv420p only).
 inline std::vector<YuvFrame> decode_all(const fs::path& file) {
   std::vector<YuvFrame> frames;
-  AVFormatContext* fmt = nullptr;
-  if (avformat_open_input(&fmt, file.c_str(), nullptr, nullptr) < 0) return frames;
-  avformat_find_stream_info(fmt, nullptr);
-  const AVCodec* codec = nullptr;
-  const int index = av_find_best_stream(fmt, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0);
-  AVCodecContext* dec = avcodec_alloc_context3(codec);
-  avcodec_parameters_to_context(dec, fmt->streams[index]->codecpar);
-  avcodec_open2(dec, codec, nullptr);
-  AVPacket* pkt = av_packet_alloc();
-  AVFrame* frame = av_frame_alloc();
-  auto drain = [&] {
-    while (avcodec_receive_frame(dec, frame) == 0) {
-      YuvFrame f;
-      f.width = frame->width;
-      f.height = frame->height;
-      for (int plane = 0; plane < 3; ++plane) {
-        const int w = plane == 0 ? f.width : f.width / 2, h = plane == 0 ? f.height : f.height / 2;
-        auto& out = plane == 0 ? f.y : plane == 1 ? f.u : f.v;
-        for (int row = 0; row < h; ++row) {
-          const std::uint8_t* src = frame->data[plane] + static_cast<std::ptrdiff_t>(row) * frame->linesize[plane];
-          out.insert(out.end(), src, src + w);
-        }
+  for_each_decoded_frame(file, [&](const AVFrame& frame) {
+    YuvFrame f;
+    f.width = frame.width;
+    f.height = frame.height;
+    for (int plane = 0; plane < 3; ++plane) {
+      const int w = plane == 0 ? f.width : f.width / 2, h = plane == 0 ? f.height : f.height / 2;
+      auto& out = plane == 0 ? f.y : plane == 1 ? f.u : f.v;
+      for (int row = 0; row < h; ++row) {
+        const std::uint8_t* src = frame.data[plane] + static_cast<std::ptrdiff_t>(row) * frame.linesize[plane];
+        out.insert(out.end(), src, src + w);
       }
-      frames.push_back(std::move(f));
-      av_frame_unref(frame);
     }
-  };
-  while (av_read_frame(fmt, pkt) >= 0) {
-    if (pkt->stream_index == index) {
-      avcodec_send_packet(dec, pkt);
-      drain();
-    }
-    av_packet_unref(pkt);
-  }
-  avcodec_send_packet(dec, nullptr);
-  drain();
-  av_frame_free(&frame);
-  av_packet_free(&pkt);
-  avcodec_free_context(&dec);
-  avformat_close_input(&fmt);
+    frames.push_back(std::move(f));
+  });
   return frames;
 }
 
-inline /// Decodes every frame of the file's video stream into RGB24: BT.709 limited-range YUV
+/// Decodes every frame of the file's video stream into RGB24: BT.709 limited-range YUV
 /// through swscale's exact-rounding path, RGB (bgr0, planar GBR) and PAL8 by copying values.
-std::vector<Image> decode_rgb(const fs::path& file) {
+inline std::vector<Image> decode_rgb(const fs::path& file) {
   std::vector<Image> frames;
-  AVFormatContext* fmt = nullptr;
-  if (avformat_open_input(&fmt, file.c_str(), nullptr, nullptr) < 0) return frames;
-  avformat_find_stream_info(fmt, nullptr);
-  const AVCodec* codec = nullptr;
-  const int index = av_find_best_stream(fmt, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0);
-  AVCodecContext* dec = avcodec_alloc_context3(codec);
-  avcodec_parameters_to_context(dec, fmt->streams[index]->codecpar);
-  avcodec_open2(dec, codec, nullptr);
-  AVPacket* pkt = av_packet_alloc();
-  AVFrame* frame = av_frame_alloc();
-  auto drain = [&] {
-    while (avcodec_receive_frame(dec, frame) == 0) {
-      Image rgb(frame->width, frame->height);
-      const auto f = static_cast<AVPixelFormat>(frame->format);
-      if (f == AV_PIX_FMT_GBRP) {
-        for (int y = 0; y < rgb.height; ++y)
-          for (int x = 0; x < rgb.width; ++x) {
-            auto at = [&](int plane) { return frame->data[plane][static_cast<std::ptrdiff_t>(y) * frame->linesize[plane] + x]; };
-            std::uint8_t* p = rgb.row(y) + 3 * x;
-            p[0] = at(2), p[1] = at(0), p[2] = at(1);  // GBRP planes: G, B, R.
-          }
-      } else if (f == AV_PIX_FMT_PAL8 || f == AV_PIX_FMT_BGR0 || f == AV_PIX_FMT_BGRA || f == AV_PIX_FMT_RGB24 || f == AV_PIX_FMT_RGBA) {
-        SwsContext* sws = sws_getContext(rgb.width, rgb.height, f, rgb.width, rgb.height, AV_PIX_FMT_RGB24, SWS_POINT,
-                                         nullptr, nullptr, nullptr);
-        std::uint8_t* dst[1] = {rgb.rgb.data()};
-        const int stride[1] = {rgb.width * 3};
-        sws_scale(sws, frame->data, frame->linesize, 0, rgb.height, dst, stride);
-        sws_freeContext(sws);
-      } else {
-        SwsContext* sws = sws_getContext(rgb.width, rgb.height, f, rgb.width, rgb.height, AV_PIX_FMT_RGB24,
-                                         SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr, nullptr);
+  for_each_decoded_frame(file, [&](const AVFrame& frame) {
+    Image rgb(frame.width, frame.height);
+    const auto f = static_cast<AVPixelFormat>(frame.format);
+    if (f == AV_PIX_FMT_GBRP) {
+      for (int y = 0; y < rgb.height; ++y)
+        for (int x = 0; x < rgb.width; ++x) {
+          auto at = [&](int plane) { return frame.data[plane][static_cast<std::ptrdiff_t>(y) * frame.linesize[plane] + x]; };
+          std::uint8_t* p = rgb.row(y) + 3 * x;
+          p[0] = at(2), p[1] = at(0), p[2] = at(1);  // GBRP planes: G, B, R.
+        }
+    } else {
+      const bool copy = f == AV_PIX_FMT_PAL8 || f == AV_PIX_FMT_BGR0 || f == AV_PIX_FMT_BGRA || f == AV_PIX_FMT_RGB24 ||
+                        f == AV_PIX_FMT_RGBA;
+      SwsContext* sws = sws_getContext(rgb.width, rgb.height, f, rgb.width, rgb.height, AV_PIX_FMT_RGB24,
+                                       copy ? SWS_POINT : SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
+                                       nullptr, nullptr);
+      if (!copy) {
         const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
         sws_setColorspaceDetails(sws, bt709, 0, bt709, 1, 0, 1 << 16, 1 << 16);
-        std::uint8_t* dst[1] = {rgb.rgb.data()};
-        const int stride[1] = {rgb.width * 3};
-        sws_scale(sws, frame->data, frame->linesize, 0, rgb.height, dst, stride);
-        sws_freeContext(sws);
       }
-      frames.push_back(std::move(rgb));
-      av_frame_unref(frame);
+      std::uint8_t* dst[1] = {rgb.rgb.data()};
+      const int stride[1] = {rgb.width * 3};
+      sws_scale(sws, frame.data, frame.linesize, 0, rgb.height, dst, stride);
+      sws_freeContext(sws);
     }
-  };
-  while (av_read_frame(fmt, pkt) >= 0) {
-    if (pkt->stream_index == index) {
-      avcodec_send_packet(dec, pkt);
-      drain();
-    }
-    av_packet_unref(pkt);
-  }
-  avcodec_send_packet(dec, nullptr);
-  drain();
-  av_frame_free(&frame);
-  av_packet_free(&pkt);
-  avcodec_free_context(&dec);
-  avformat_close_input(&fmt);
+    frames.push_back(std::move(rgb));
+  });
   return frames;
 }
 

@@ -16,13 +16,6 @@ using testing::Shape;
 using testing::triangle;
 using testing::uv_sphere;
 
-// Before the first context of the process: no shader disk-cache thread writing to ~/.cache.
-const bool kEnvironment = [] {
-  setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
-  setenv("LP_NUM_THREADS", "2", 0);
-  return true;
-}();
-
 constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 const scene::Color kBackground(0.06, 0.07, 0.09);

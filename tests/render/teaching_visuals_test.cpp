@@ -16,12 +16,6 @@ namespace {
 using testing::Shape;
 using testing::uv_sphere;
 
-const bool kEnvironment = [] {
-  setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
-  setenv("LP_NUM_THREADS", "2", 0);
-  return true;
-}();
-
 constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 const scene::Color kBackground(0.06, 0.07, 0.09);

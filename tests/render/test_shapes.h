@@ -3,10 +3,19 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <vector>
 
 namespace systole::render::testing {
+
+// Set before main, so before the first context of the process: no shader disk-cache thread
+// writing to ~/.cache, and llvmpipe's thread count fixed for every render test.
+inline const bool kEnvironment = [] {
+  setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+  setenv("LP_NUM_THREADS", "2", 0);
+  return true;
+}();
 
 struct Shape {
   std::vector<float> positions;  ///< xyz per vertex. unit: m
