@@ -8,8 +8,8 @@
 
 #include <string>
 
-#include "app/overlay_plan.h"
-#include "app/world.h"
+#include "clip/overlay_plan.h"
+#include "world/world.h"
 #include "scene/load.h"
 
 namespace {
@@ -18,13 +18,13 @@ using namespace systole;
 
 struct Fixture {
   scene::Scene scene = scene::load(std::string(SYSTOLE_SOURCE_DIR) + "/scenes/heart-labels.yaml");
-  app::World world = app::build_world(scene);
-  app::OverlayPlan plan{scene, world};
+  world::World world = world::build_world(scene);
+  clip::OverlayPlan plan{scene, world};
   Eigen::Matrix3Xd x;
   std::vector<const Eigen::Matrix3Xd*> positions{&x};
 
   Fixture() {
-    app::render_positions(world.organs[0], x);
+    world::render_positions(world.organs[0], x);
     for (int f = 0; f < scene.output.frame_count(); ++f) plan.record_volume(0, f, x);
   }
 };
@@ -36,7 +36,7 @@ Fixture& fixture() {
 
 void BM_OverlayCapture(benchmark::State& state) {
   auto& f = fixture();
-  app::OverlayFrame frame;
+  clip::OverlayFrame frame;
   int i = 0;
   for (auto _ : state) {
     f.plan.capture(i++ % f.scene.output.frame_count(), f.positions, frame);
@@ -50,7 +50,7 @@ void BM_OverlayDraw720p(benchmark::State& state) {
   Image base(f.scene.output.width, f.scene.output.height);
   for (std::size_t k = 0; k < base.rgb.size(); ++k) base.rgb[k] = static_cast<std::uint8_t>(20 + k % 7);
   Image image = base;
-  std::vector<app::OverlayFrame> frames(static_cast<std::size_t>(f.scene.output.frame_count()));
+  std::vector<clip::OverlayFrame> frames(static_cast<std::size_t>(f.scene.output.frame_count()));
   for (std::size_t k = 0; k < frames.size(); ++k) f.plan.capture(static_cast<int>(k), f.positions, frames[k]);
   f.plan.draw(image, frames[0]);  // Loads the font and lays out once, as the first frame of a clip does.
   std::size_t k = 0;

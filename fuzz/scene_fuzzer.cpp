@@ -1,4 +1,4 @@
-// Fuzz target: YAML text -> scene::load_from_string -> the resource limits -> app::build_world
+// Fuzz target: YAML text -> scene::load_from_string -> the resource limits -> world::build_world
 // -> two frames of simulation. Bad input must end in a systole::Error (a clear message and
 // an exit code); anything else - a crash, a sanitizer report, another exception, a hang -
 // is a bug. Run with scripts/fuzz; fuzz/corpus/scene holds the seeds.
@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "app/limits.h"
-#include "app/world.h"
+#include "clip/limits.h"
+#include "world/world.h"
 #include "common/error.h"
 #include "scene/load.h"
 
@@ -19,18 +19,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const scene::Scene scene = scene::load_from_string(yaml, "fuzz.yaml");
     // As `systole render` does: absurd work is refused before it starts.
-    app::Limits limits;
+    clip::Limits limits;
     // Tighter than the defaults, so one input takes a fraction of a second.
     limits.max_vertices = 200'000;
     limits.max_substeps = 50'000;
-    app::check_scene_limits(scene, {scene.output.frame_count(), true, false}, limits);
-    app::World world = app::build_world(scene);
-    app::check_world_limits(scene, world, limits);
+    clip::check_scene_limits(scene, {scene.output.frame_count(), true, false}, limits);
+    world::World world = world::build_world(scene);
+    clip::check_world_limits(scene, world, limits);
     // The implicit solver (Eigen CG) runs ~170x slower under libFuzzer's coverage
     // instrumentation than in Release (69 s for two frames of a kidney and a liver): stepping
     // it would time such inputs out and stall the run. Its scene and model are still built;
     // tests/sim covers its stepping, under the sanitizers too.
-    if (scene.solver.method != scene::SolverMethod::kImplicit) app::advance_to_frame(world, std::min(2, scene.output.frame_count()));
+    if (scene.solver.method != scene::SolverMethod::kImplicit) world::advance_to_frame(world, std::min(2, scene.output.frame_count()));
   } catch (const Error&) {
     // A clear error is the right answer to bad input.
   }

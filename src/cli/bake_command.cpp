@@ -1,7 +1,7 @@
 #include <iostream>
 #include <memory>
 
-#include "app/bake.h"
+#include "clip/bake.h"
 #include "cli/command.h"
 #include "scene/load.h"
 
@@ -26,7 +26,7 @@ Command add_bake_command(CLI::App& app) {
               file = std::filesystem::path("out") / (scene.name + ".bake");
               std::filesystem::create_directories(file.parent_path());
             }
-            const double wall_s = app::bake_clip(scene, file, progress_style(o->progress), scene.name);
+            const double wall_s = clip::bake_clip(scene, file, progress_style(o->progress), scene.name);
             std::cerr << "wrote " << file.string() << " (" << scene.output.frame_count() << " frames, "
                       << std::filesystem::file_size(file) / 1e6 << " MB) in " << wall_s << " s\n";
             return 0;

@@ -1,7 +1,7 @@
 #include <iostream>
 #include <memory>
 
-#include "app/bench.h"
+#include "study/accuracy.h"
 #include "cli/command.h"
 #include "common/error.h"
 #include "encode/png.h"
@@ -71,7 +71,7 @@ Command add_bench_command(CLI::App& app) {
       ->capture_default_str();
   return {cmd, [o] {
             const auto scene = scene::load(o->scene, o->defines);
-            app::BenchOptions options;
+            study::BenchOptions options;
             options.duration_s = o->duration_s;
             options.reference_dt_s = parse_step(o->reference_dt);
             options.reference_substeps = o->reference_substeps;
@@ -87,17 +87,17 @@ Command add_bench_command(CLI::App& app) {
               std::vector<double> dts;
               for (const auto& d : o->dts) dts.push_back(parse_step(d));
               if (dts.empty()) dts = {1.0 / 240.0};
-              options.grid = app::grid_of(methods, dts, o->substeps.empty() ? std::vector<int>{4} : o->substeps,
+              options.grid = study::grid_of(methods, dts, o->substeps.empty() ? std::vector<int>{4} : o->substeps,
                                           o->lattices.empty() ? std::vector<int>{0} : o->lattices);
             }
-            const app::BenchReport report =
-                app::run_bench(scene, options, [](const std::string& run) { std::cerr << "bench: " << run << "\n"; });
-            std::cout << app::format_table(report);
+            const study::BenchReport report =
+                study::run_bench(scene, options, [](const std::string& run) { std::cerr << "bench: " << run << "\n"; });
+            std::cout << study::format_table(report);
             const std::string prefix = o->output.empty() ? "out/" + scene.name + "-bench" : o->output;
             const std::filesystem::path csv = prefix + ".csv", png = prefix + ".png";
             if (csv.has_parent_path()) std::filesystem::create_directories(csv.parent_path());
-            app::write_csv(csv, report);
-            encode::write_png(png, plot::render(app::speed_error_figure(report)));
+            study::write_csv(csv, report);
+            encode::write_png(png, plot::render(study::speed_error_figure(report)));
             std::cout << "wrote " << csv.string() << " and " << png.string() << "\n";
             return 0;
           }};

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "app/progress.h"
+#include "clip/progress.h"
 
 namespace systole::cli {
 
@@ -30,7 +30,7 @@ void add_define_option(CLI::App& command, std::vector<std::string>& defines);
 /// Adds `--progress auto|none|json` (render_command.cpp).
 void add_progress_option(CLI::App& command, std::string& progress);
 /// The style --progress asks for; "auto" draws a line only when stderr is a terminal.
-app::ProgressStyle progress_style(const std::string& progress);
+clip::ProgressStyle progress_style(const std::string& progress);
 
 /// Adds `--allow-large`, which lifts the resource limits (app/limits.h).
 void add_allow_large_flag(CLI::App& command, bool& allow_large);

@@ -1,7 +1,7 @@
 #include <iostream>
 #include <memory>
 
-#include "app/compare.h"
+#include "study/compare.h"
 #include "cli/command.h"
 #include "common/error.h"
 #include "encode/png.h"
@@ -11,7 +11,7 @@ namespace systole::cli {
 Command add_compare_command(CLI::App& app) {
   struct Options {
     std::string actual, reference, diff;
-    app::CompareTolerance tolerance;
+    study::CompareTolerance tolerance;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -30,11 +30,11 @@ Command add_compare_command(CLI::App& app) {
   return {cmd, [o] {
             const Image actual = encode::read_png(o->actual);
             const Image reference = encode::read_png(o->reference);
-            const auto result = app::compare_images(actual, reference, o->tolerance);
-            std::cout << app::describe(result, o->tolerance);
+            const auto result = study::compare_images(actual, reference, o->tolerance);
+            std::cout << study::describe(result, o->tolerance);
             if (result.passed) return static_cast<int>(ExitCode::kOk);
             if (!o->diff.empty()) {
-              encode::write_png(o->diff, app::difference_image(actual, reference));
+              encode::write_png(o->diff, study::difference_image(actual, reference));
               std::cout << "wrote " << o->diff << " (actual | reference | amplified difference)\n";
             }
             return static_cast<int>(ExitCode::kDiffers);

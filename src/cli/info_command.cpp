@@ -1,6 +1,6 @@
 #include <iostream>
 
-#include "app/info.h"
+#include "study/info.h"
 #include "cli/command.h"
 
 namespace systole::cli {
@@ -8,7 +8,7 @@ namespace systole::cli {
 Command add_info_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("info", "Versions, GL renderer and available encoders.");
   return {cmd, [] {
-            std::cout << app::system_info();
+            std::cout << study::system_info();
             return 0;
           }};
 }

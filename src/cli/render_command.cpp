@@ -2,13 +2,14 @@
 #include <iostream>
 #include <memory>
 
-#include "app/batch.h"
-#include "app/frame_list.h"
-#include "app/limits.h"
-#include "app/manifest.h"
-#include "app/progress.h"
+#include "batch/batch.h"
+#include "clip/frame_list.h"
+#include "clip/limits.h"
+#include "batch/manifest.h"
+#include "clip/progress.h"
 #include "cli/command.h"
 #include "common/error.h"
+#include "scene/content_hash.h"
 #include "scene/load.h"
 
 namespace systole::cli {
@@ -21,25 +22,25 @@ void add_progress_option(CLI::App& command, std::string& progress) {
       ->default_val("auto");
 }
 
-app::ProgressStyle progress_style(const std::string& progress) {
-  if (progress == "json") return app::ProgressStyle::kJson;
-  if (progress == "none" || !app::Progress::stderr_is_terminal()) return app::ProgressStyle::kNone;
-  return app::ProgressStyle::kTerminal;
+clip::ProgressStyle progress_style(const std::string& progress) {
+  if (progress == "json") return clip::ProgressStyle::kJson;
+  if (progress == "none" || !clip::Progress::stderr_is_terminal()) return clip::ProgressStyle::kNone;
+  return clip::ProgressStyle::kTerminal;
 }
 
 namespace {
 
 /// --dry-run: each job of this shard, its overrides and its video, and whether it is done.
-void print_plan(const std::vector<app::Job>& jobs, const app::BatchOptions& options) {
+void print_plan(const std::vector<batch::Job>& jobs, const batch::BatchOptions& options) {
   for (const auto& job : jobs) {
     std::cout << job.name << "\t" << job.scene.string();
     for (const auto& o : job.overrides) std::cout << " -D '" << o << "'";
     try {
       const auto scene = scene::load(job.scene, job.overrides);
-      const auto request = app::plan_request(job, scene, options);
+      const auto request = batch::plan_request(job, scene, options);
       std::cout << "\t-> " << (request.video.empty() ? request.png_dir : request.video).string();
       if (!request.video.empty() && options.from_bake.empty() && !options.force &&
-          app::up_to_date(request.video, {job.scene.string(), app::scene_content_hash(scene), job.overrides,
+          batch::up_to_date(request.video, {job.scene.string(), scene::scene_content_hash(scene), job.overrides,
                                           options.frames, 0})) {
         std::cout << " (up to date: skipped)";
       }
@@ -72,7 +73,7 @@ Command add_render_command(CLI::App& app) {
   cmd->add_flag("--no-video", o->no_video, "Write no video (with --png: frames only)");
   cmd->add_option("--frames", o->frames,
                   std::string("Render only these frames, as PNGs (needs --png; with -o also a video, if they are "
-                              "consecutive). Forms: ") + app::kFrameListForms);
+                              "consecutive). Forms: ") + clip::kFrameListForms);
   cmd->add_option("--from-bake", o->from_bake, "Read the positions from this bake (systole bake) instead of simulating");
   cmd->add_option("-j,--jobs", o->jobs, "Clips rendered at once, each in its own process")
       ->check(CLI::Range(1, 64))
@@ -87,16 +88,16 @@ Command add_render_command(CLI::App& app) {
   add_allow_large_flag(*cmd, o->allow_large);
 
   return {cmd, [o] {
-            const auto all = app::expand_jobs(o->scenes, o->defines);
-            const app::Shard shard = o->shard.empty() ? app::shard_from_environment() : app::parse_shard(o->shard);
-            const auto jobs = app::select_shard(all, shard);
-            app::BatchOptions options;
+            const auto all = batch::expand_jobs(o->scenes, o->defines);
+            const batch::Shard shard = o->shard.empty() ? batch::shard_from_environment() : batch::parse_shard(o->shard);
+            const auto jobs = batch::select_shard(all, shard);
+            batch::BatchOptions options;
             options.output = o->output;
             options.png_dir = o->png_dir;
             options.no_video = o->no_video;
             options.frames = o->frames;
             options.from_bake = o->from_bake;
-            options.limits = o->allow_large ? app::Limits::none() : app::Limits{};
+            options.limits = o->allow_large ? clip::Limits::none() : clip::Limits{};
             options.progress = progress_style(o->progress);
             options.force = o->force;
             options.parallel = o->jobs;
@@ -109,12 +110,12 @@ Command add_render_command(CLI::App& app) {
               print_plan(jobs, options);
               return 0;
             }
-            const bool json = options.progress == app::ProgressStyle::kJson;
-            const auto results = app::run_jobs(jobs, options, [&](const app::JobResult& r) {
-              if (json) std::cout << app::result_json(r) << std::endl;
+            const bool json = options.progress == clip::ProgressStyle::kJson;
+            const auto results = batch::run_jobs(jobs, options, [&](const batch::JobResult& r) {
+              if (json) std::cout << batch::result_json(r) << std::endl;
             });
-            if (options.several) std::cerr << app::summary_table(results);
-            const int code = app::batch_exit_code(results);
+            if (options.several) std::cerr << batch::summary_table(results);
+            const int code = batch::batch_exit_code(results);
             if (code != 0 && !options.several) throw Error(static_cast<ExitCode>(code), results[0].error);
             return code;
           }};

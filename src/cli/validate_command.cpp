@@ -1,9 +1,9 @@
 #include <iostream>
 #include <memory>
 
-#include "app/limits.h"
-#include "app/summary.h"
-#include "app/world.h"
+#include "clip/limits.h"
+#include "study/summary.h"
+#include "world/world.h"
 #include "cli/command.h"
 #include "scene/load.h"
 
@@ -33,11 +33,11 @@ Command add_validate_command(CLI::App& app) {
   return {cmd, [o] {
             const auto scene = scene::load(o->scene, o->defines);
             // The limits `render` would apply to the default video, so a scene that passes here renders.
-            const auto limits = o->allow_large ? app::Limits::none() : app::Limits{};
-            app::check_scene_limits(scene, {scene.output.frame_count(), true, false}, limits);
-            const auto world = app::build_world(scene);
-            app::check_world_limits(scene, world, limits);
-            std::cout << app::summarize(scene, world) << "ok\n";
+            const auto limits = o->allow_large ? clip::Limits::none() : clip::Limits{};
+            clip::check_scene_limits(scene, {scene.output.frame_count(), true, false}, limits);
+            const auto world = world::build_world(scene);
+            clip::check_world_limits(scene, world, limits);
+            std::cout << study::summarize(scene, world) << "ok\n";
             return 0;
           }};
 }

@@ -4,7 +4,7 @@
 #include <limits>
 #include <numbers>
 
-#include "app/world.h"
+#include "world/world.h"
 #include "sim/step.h"
 
 namespace systole::train {
@@ -13,8 +13,8 @@ Problem make_problem(const scene::Scene& scene, std::size_t organ_index) {
   scene::Scene alone = scene;
   alone.organs = {scene.organs[organ_index]};
   alone.interactions.clear();
-  app::World world = app::build_world(alone);
-  app::OrganBody& body = world.organs.front();
+  world::World world = world::build_world(alone);
+  world::OrganBody& body = world.organs.front();
   const scene::Organ& organ = alone.organs.front();
   Problem p{organ.name, std::move(body.model), world.dt_s, organ.target.rate_hz, 0, 0,
             load_target(organ, body.geometry), {}, {}, {}};

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "app/world.h"
+#include "world/world.h"
 #include "scene/load.h"
 #include "sim/step.h"
 #include "train/fourier.h"
@@ -23,8 +23,8 @@ constexpr int kFrames = 40;
 /// Key frames of the known drives: the ball run free for 2 cycles, then one cycle sampled.
 std::string write_truth_frames(const std::filesystem::path& dir, const std::string& truth_yaml) {
   write_text(dir / "truth.yaml", truth_yaml);
-  app::World world = app::build_world(scene::load(dir / "truth.yaml"));
-  app::OrganBody& body = world.organs.front();
+  world::World world = world::build_world(scene::load(dir / "truth.yaml"));
+  world::OrganBody& body = world.organs.front();
   const int steps_per_frame = static_cast<int>(std::lround(1.0 / (kFrames * world.dt_s)));
   const int settle = 2 * kFrames * steps_per_frame;
   for (int k = 0; k < settle; ++k) sim::step(body.model, body.state, world.dt_s);

@@ -1,0 +1,52 @@
+# Fails when a file under SOURCE_DIR/<module>/ includes "<other>/..." from a module it may
+# not use (the table in Architecture.cmake), or when a sim file other than the bridge
+# includes scene/. Run as: cmake -DSOURCE_DIR=<dir with module folders> -P CheckIncludes.cmake
+# (ctest: architecture.includes; architecture.includes_catch_a_violation proves it can fail).
+cmake_minimum_required(VERSION 3.25)  # script mode: today's policies (IN_LIST, empty list elements)
+include(${CMAKE_CURRENT_LIST_DIR}/Architecture.cmake)
+if(NOT SOURCE_DIR)
+  message(FATAL_ERROR "usage: cmake -DSOURCE_DIR=<src> -P CheckIncludes.cmake")
+endif()
+
+set(modules "")
+foreach(row IN LISTS SYSTOLE_MODULES)
+  string(REGEX REPLACE ":.*" "" name "${row}")
+  list(APPEND modules ${name})
+endforeach()
+
+set(violations "")
+file(GLOB_RECURSE files RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/*.h ${SOURCE_DIR}/*.cpp)
+foreach(file IN LISTS files)
+  string(REGEX REPLACE "/.*" "" module "${file}")
+  if(module STREQUAL file)
+    continue()  # A file at the top of src/ (CMakeLists.txt only today).
+  endif()
+  systole_allowed_modules(${module} allowed known)
+  if(NOT known)
+    string(APPEND violations "  ${file}: folder '${module}' is not a module of docs/architecture.md\n")
+    continue()
+  endif()
+  file(STRINGS ${SOURCE_DIR}/${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
+  foreach(line IN LISTS includes)
+    string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"([^\"]*)\".*" "\\1" path "${line}")
+    string(REGEX REPLACE "/.*" "" used "${path}")
+    if(used STREQUAL path OR used STREQUAL module OR NOT used IN_LIST modules)
+      continue()  # Same folder, or not a module (a generated or external header).
+    endif()
+    if(module STREQUAL "sim" AND used STREQUAL "scene")
+      if(NOT file IN_LIST SYSTOLE_SIM_SCENE_BRIDGE)
+        string(APPEND violations "  ${file}: includes \"${path}\"; only ${SYSTOLE_SIM_SCENE_BRIDGE} may\n")
+      endif()
+      continue()
+    endif()
+    if(NOT used IN_LIST allowed)
+      string(APPEND violations "  ${file}: includes \"${path}\", but ${module} may use only: ${allowed}\n")
+    endif()
+  endforeach()
+endforeach()
+
+if(violations)
+  message(FATAL_ERROR "Forbidden dependencies (docs/architecture.md, cmake/Architecture.cmake):\n${violations}")
+endif()
+list(LENGTH files count)
+message(STATUS "architecture: ${count} files, every include within the module graph")

@@ -1,0 +1,97 @@
+#pragma once
+// The scene's teaching overlays (scene::Overlay) on a clip's frames: what to label, list
+// and trace, worked out once per clip; the label anchors captured from each frame's
+// positions where the simulation hands them on; everything drawn on the finished
+// (anti-aliased) frame so text stays crisp. src/overlay/ does the drawing.
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "world/world.h"
+#include "common/image.h"
+#include "overlay/labels.h"
+#include "overlay/legend.h"
+#include "overlay/trace.h"
+#include "scene/scene.h"
+
+namespace systole::clip {
+
+/// What the overlay needs of one frame, captured beside the positions.
+struct OverlayFrame {
+  int frame = 0;
+  double time_s = 0;                                  ///< unit: s
+  std::vector<overlay::LabelRequest> labels;          ///< In the plan's label order; texts filled in by draw.
+  std::vector<char> label_visible;                    ///< False: the anchor is behind the camera.
+};
+
+class OverlayPlan {
+ public:
+  /// Resolves the scene's overlay against the built world. Volume traces make the world
+  /// record the organ's enclosed volume at every frame it advances (record_volume).
+  OverlayPlan(const scene::Scene& scene, const world::World& world);
+  OverlayPlan(const OverlayPlan&) = delete;
+  OverlayPlan& operator=(const OverlayPlan&) = delete;
+  ~OverlayPlan();
+
+  bool empty() const { return empty_; }
+  /// Organs whose volume is traced (their index in the world).
+  const std::vector<int>& volume_organs() const { return volume_organs_; }
+  /// Records organ `organ`'s volume at `frame` from its render-mesh positions. unit: m
+  void record_volume(int organ, int frame, const Eigen::Matrix3Xd& positions);
+  /// Whether `frame`'s volume of `organ` is recorded.
+  bool has_volume(int organ, int frame) const;
+
+  /// The label anchors of `frame` from every organ's render-mesh positions. unit: m
+  void capture(int frame, const std::vector<const Eigen::Matrix3Xd*>& positions, OverlayFrame& out) const;
+  /// Draws everything on `image` (the frame's size). Not thread-safe: one drawing thread.
+  void draw(Image& image, const OverlayFrame& frame);
+
+  /// Where the labels of the last draw went (for tests). unit: px
+  const std::vector<overlay::PlacedLabel>& placed_labels() const { return placed_; }
+  /// Where each trace inset of the last draw went (for tests). unit: px
+  const std::vector<overlay::Rect>& trace_boxes() const { return trace_boxes_; }
+  /// The traces as of the last draw.
+  const std::vector<overlay::Trace>& traces() const { return traces_; }
+  /// Where the legend of the last draw went (empty rect: none). unit: px
+  const overlay::Rect& legend_box() const { return legend_box_; }
+  const std::vector<overlay::LegendEntry>& legend_entries() const { return legend_; }
+
+ private:
+  struct LabelTarget {
+    int organ = 0;
+    int view = 0;               ///< The view it is labelled in: the first that shows its organ.
+    std::string text;
+    std::vector<int> vertices;  ///< Render-mesh vertices of the region.
+  };
+  /// A view of the frame (the whole frame when the scene has no `views`).
+  struct ViewFrame {
+    scene::Camera camera;       ///< As written; moved to each frame's time by camera_at.
+    scene::PixelRect rect;      ///< unit: px
+    std::string title;
+  };
+  void layout(int width, int height);
+
+  bool empty_ = true;
+  scene::Overlay spec_;
+  std::vector<ViewFrame> views_;
+  overlay::ColorBar color_bar_;  ///< The legend organ's scalar colour map (strain, activation); empty colors: none.
+  int width_ = 0, height_ = 0;  ///< unit: px
+  double fps_ = 30;
+  std::vector<LabelTarget> targets_;
+  std::vector<overlay::LegendEntry> legend_;
+  std::vector<overlay::Trace> traces_;
+  std::vector<int> trace_volume_organ_;  ///< Per trace: the organ whose volume it shows, or -1.
+  std::vector<int> volume_organs_;
+  std::vector<std::vector<double>> volume_mL_;  ///< Per world organ: per frame, NaN until recorded.
+  std::vector<std::vector<Eigen::Vector3i>> triangles_;  ///< Per world organ: the render mesh's.
+
+  std::unique_ptr<plot::Font> font_;  ///< Loaded on the drawing thread's first frame.
+  bool laid_out_ = false;
+  overlay::Rect legend_box_, title_box_;
+  std::vector<overlay::Rect> trace_boxes_;
+  std::vector<overlay::PlacedLabel> placed_;
+};
+
+}  // namespace systole::clip

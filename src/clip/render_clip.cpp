@@ -1,0 +1,382 @@
+#include "clip/render_clip.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <optional>
+#include <numeric>
+#include <vector>
+
+#include "clip/bake.h"
+#include "clip/camera_motion.h"
+#include "overlay/cards.h"
+#include "clip/frame_list.h"
+#include "clip/frame_pipeline.h"
+#include "clip/overlay_plan.h"
+#include "clip/progress.h"
+#include "world/world.h"
+#include "common/error.h"
+#include "encode/video_writer.h"
+#include "encode/png.h"
+#include "mesh/normals.h"
+#include "mesh/strain.h"
+#include "render/color_map.h"
+#include "render/fxaa.h"
+#include "render/renderer.h"
+#include "sim/drive.h"
+
+namespace systole::clip {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// Per vertex: its region's opacity, else the material's; empty when all are the material's.
+std::vector<double> vertex_opacity(const scene::Organ& organ, const std::vector<int>& vertex_region) {
+  const bool any = std::any_of(organ.regions.begin(), organ.regions.end(), [](const scene::Region& r) { return r.has_opacity; });
+  if (!any) return {};
+  std::vector<double> opacity(vertex_region.size(), organ.material.opacity);
+  for (std::size_t i = 0; i < vertex_region.size(); ++i) {
+    const int r = vertex_region[i];
+    if (r >= 0 && organ.regions[static_cast<std::size_t>(r)].has_opacity) opacity[i] = organ.regions[static_cast<std::size_t>(r)].opacity;
+  }
+  return opacity;
+}
+
+/// One organ's surface for one frame, as the renderer takes it (allocated once per slot).
+struct SurfaceBuffers {
+  Eigen::Matrix3Xd mesh_positions;  ///< The render mesh's vertices this frame (world::render_positions). unit: m
+  std::vector<float> positions, normals;  ///< xyz per vertex. unit: m, 1
+  std::vector<float> colors;        ///< sRGB per vertex, for colour maps that change (strain, activation).
+  std::vector<double> values;       ///< The mapped value per vertex. unit: 1
+  std::vector<double> region_phi;   ///< Activation per region this frame. unit: 1
+};
+
+/// An organ coloured by a value that changes every frame.
+struct DynamicColors {
+  render::ColorMap map;
+  scene::ColorBy by = scene::ColorBy::kStrain;
+  std::optional<mesh::VertexStrain> strain;  ///< kStrain: the mesh's edges at rest.
+};
+
+/// Fills buf.colors from the organ's colour map at time t_s (unit: s).
+void map_colors(const DynamicColors& dynamic, const world::OrganBody& body, const scene::Organ& organ, double t_s,
+                SurfaceBuffers& buf) {
+  if (dynamic.by == scene::ColorBy::kStrain) {
+    dynamic.strain->compute(buf.mesh_positions, buf.values);
+  } else {
+    // Activation phi(t) of each vertex's region; 0 for the undriven body.
+    static const std::vector<double> kRegular;
+    const auto& beats = body.model.beat_boundaries;
+    const std::vector<int>& vertex_region = body.geometry.vertex_region;
+    buf.region_phi.resize(organ.regions.size());
+    for (std::size_t r = 0; r < organ.regions.size(); ++r) {
+      buf.region_phi[r] = sim::activation(organ.regions[r].drive, t_s, body.model.ramp_s, r < beats.size() ? beats[r] : kRegular);
+    }
+    buf.values.resize(vertex_region.size());
+    for (std::size_t v = 0; v < vertex_region.size(); ++v) {
+      buf.values[v] = vertex_region[v] >= 0 ? buf.region_phi[static_cast<std::size_t>(vertex_region[v])] : 0.0;
+    }
+  }
+  for (std::size_t v = 0; v < buf.values.size(); ++v) {
+    const scene::Color c = dynamic.map.at(buf.values[v]);
+    for (int k = 0; k < 3; ++k) buf.colors[3 * v + k] = static_cast<float>(c[k]);
+  }
+}
+
+/// Frames in flight between two stages. Three: one being written, one being read, and one
+/// ready, so a stage that is briefly slower does not stall the other.
+constexpr int kPipelineDepth = 3;
+
+/// Threads the stages get, for the two-core machines we target (docs/performance.md):
+/// llvmpipe rasterizes on one thread of its own while the simulation and the encoder run
+/// beside it; more threads only contend for the same two cores.
+constexpr const char* kRasterizerThreads = "1";
+constexpr int kEncoderThreads = 1;
+
+/// The frames to render: the request's list checked against the clip, or every frame.
+std::vector<int> selected_frames(const RenderRequest& request, int frame_count) {
+  if (request.frames.empty()) {
+    std::vector<int> all(frame_count);
+    std::iota(all.begin(), all.end(), 0);
+    return all;
+  }
+  for (std::size_t i = 0; i < request.frames.size(); ++i) {
+    const int f = request.frames[i];
+    if (f < 0 || f >= frame_count) {
+      throw Error(ExitCode::kUsage, "frame " + std::to_string(f) + " is outside the clip: it has " +
+                                        std::to_string(frame_count) + " frames (0.." +
+                                        std::to_string(frame_count - 1) + ")");
+    }
+    if (i > 0 && f <= request.frames[i - 1]) {
+      throw Error(ExitCode::kUsage, "the frame list must be sorted and without duplicates");
+    }
+  }
+  if (!request.video.empty() && !is_contiguous(request.frames)) {
+    throw Error(ExitCode::kUsage,
+                "a video needs consecutive frames (a range such as 10..20); write other selections as PNG frames");
+  }
+  return request.frames;
+}
+
+encode::VideoFormat encode_format(scene::Format f) {
+  switch (f) {
+    case scene::Format::kMkv: return encode::VideoFormat::kMkv;
+    case scene::Format::kWebm: return encode::VideoFormat::kWebm;
+    case scene::Format::kGif: return encode::VideoFormat::kGif;
+    default: return encode::VideoFormat::kMp4;
+  }
+}
+
+/// The encoder settings for the scene's output in `format`. VP9's constant quality and
+/// speed follow output.quality like x264's CRF and preset (docs/teaching-visuals.md).
+encode::VideoSettings video_settings(const scene::Output& out, encode::VideoFormat format) {
+  encode::VideoSettings v;
+  v.format = format;
+  v.width = out.width;
+  v.height = out.height;
+  v.fps = out.fps;
+  v.crf = out.crf;
+  v.preset = out.preset;
+  v.threads = kEncoderThreads;
+  const auto [vp9_crf, vp9_speed] = out.quality == scene::Quality::kDraft      ? std::pair{40, 5}
+                                    : out.quality == scene::Quality::kArchival ? std::pair{24, 2}
+                                                                               : std::pair{32, 4};
+  v.vp9_crf = vp9_crf;
+  v.vp9_speed = vp9_speed;
+  return v;
+}
+
+}  // namespace
+
+encode::VideoFormat video_format(const scene::Scene& scene, const std::filesystem::path& video) {
+  if (const auto named = encode::video_format_of(video)) return *named;
+  return encode_format(scene.output.format);
+}
+
+std::vector<render::ViewDraw> frame_views(const scene::Scene& scene, const std::vector<int>& surface_ids) {
+  std::vector<render::ViewDraw> views;
+  if (scene.views.empty()) {
+    views.emplace_back();  // The whole frame, every surface, no cut.
+    views.back().camera = scene.camera;
+    return views;
+  }
+  const auto rects = scene::view_rectangles(scene.output.width, scene.output.height, static_cast<int>(scene.views.size()));
+  for (std::size_t v = 0; v < scene.views.size(); ++v) {
+    const scene::View& view = scene.views[v];
+    render::ViewDraw draw;
+    draw.camera = view.has_camera ? view.camera : scene.camera;
+    draw.rect = rects[v];
+    draw.clip = view.clip;
+    for (const std::string& name : view.organs) {
+      for (std::size_t o = 0; o < scene.organs.size(); ++o) {
+        if (scene.organs[o].name == name) draw.surfaces.push_back(surface_ids[o]);
+      }
+    }
+    views.push_back(draw);
+  }
+  return views;
+}
+
+void set_view_cameras(const scene::Scene& scene, double t_s, std::vector<render::ViewDraw>& views) {
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const bool own = v < scene.views.size() && scene.views[v].has_camera;
+    views[v].camera = camera_at(own ? scene.views[v].camera : scene.camera, t_s);
+  }
+}
+
+std::filesystem::path default_video_path(const scene::Scene& scene) {
+  if (!scene.output.file.empty()) return scene.output.file;
+  return std::filesystem::path("out") / (scene.name + "." + encode::extension_of(encode_format(scene.output.format)));
+}
+
+StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) {
+  const auto start = Clock::now();
+  StageTimes times;
+  const auto& out = scene.output;
+  const int frame_count = out.frame_count();
+  const std::vector<int> frames = selected_frames(request, frame_count);
+  check_scene_limits(scene, {static_cast<int>(frames.size()), !request.video.empty(), !request.png_dir.empty()},
+                     request.limits);
+  world::World world = world::build_world(scene);
+  check_world_limits(scene, world, request.limits);
+  // Read when the process creates its first context; a value set by the caller wins.
+  setenv("LP_NUM_THREADS", kRasterizerThreads, /*overwrite=*/0);
+  const int msaa = out.antialias == scene::Antialias::kMsaa4 ? 4 : out.antialias == scene::Antialias::kMsaa2 ? 2 : 0;
+  render::Renderer renderer(out.width, out.height, msaa);
+
+  // slots[k][o]: organ o of the frame in slot k.
+  std::vector<std::vector<SurfaceBuffers>> slots(kPipelineDepth, std::vector<SurfaceBuffers>(world.organs.size()));
+  std::vector<int> surface_ids;
+  std::vector<std::optional<DynamicColors>> dynamic(world.organs.size());
+  for (std::size_t o = 0; o < world.organs.size(); ++o) {
+    const auto& body = world.organs[o];
+    const auto& organ = scene.organs[o];
+    const auto& surface = body.geometry.mesh.surface;
+    surface_ids.push_back(renderer.add_surface(surface.triangles,
+                                               render::static_vertex_colors(organ, body.geometry.vertex_region),
+                                               organ.material, vertex_opacity(organ, body.geometry.vertex_region)));
+    if (organ.clip.enabled) renderer.set_clip(surface_ids.back(), organ.clip);
+    if (const render::OrganColorMap map = render::organ_color_map(organ); map.has) {
+      dynamic[o].emplace();
+      dynamic[o]->map = map.map;
+      dynamic[o]->by = organ.color_by;
+      if (organ.color_by == scene::ColorBy::kStrain) dynamic[o]->strain.emplace(surface.positions, surface.triangles);
+    }
+    for (auto& slot : slots) {
+      slot[o].positions.resize(3 * surface.positions.size());
+      slot[o].normals.resize(3 * surface.positions.size());
+      if (dynamic[o]) slot[o].colors.resize(3 * surface.positions.size());
+    }
+  }
+  // The views: each a rectangle with its organs' surfaces; the render stage moves their cameras.
+  std::vector<render::ViewDraw> views = frame_views(scene, surface_ids);
+
+  // Sinks are opened before the first frame so a bad output path fails before any work.
+  std::unique_ptr<encode::FrameSink> video, png;
+  if (!request.video.empty()) {
+    video = encode::open_video(request.video, video_settings(out, video_format(scene, request.video)));
+  }
+  if (!request.png_dir.empty()) png = std::make_unique<encode::PngSequenceWriter>(request.png_dir, frame_count);
+  // Title cards open the video when it starts at the clip's start; PNG frames are the
+  // clip's frames only (with their captions), numbered as always.
+  overlay::CardPainter cards(scene);
+  const int video_offset = video && frames.front() == 0 ? cards.card_frames() : 0;
+
+  // Overlays: anchors captured with the positions (produce), handed on through the render
+  // stage's slots (produce may refill its slot before consume is done), drawn after FXAA.
+  OverlayPlan overlay(scene, world);
+  std::vector<OverlayFrame> overlay_produced(kPipelineDepth), overlay_rendered(kPipelineDepth);
+  Eigen::Matrix3Xd volume_positions;
+  if (!overlay.volume_organs().empty() && request.from_bake.empty()) {
+    const auto record = [&](int frame) {
+      for (int o : overlay.volume_organs()) {
+        world::render_positions(world.organs[static_cast<std::size_t>(o)], volume_positions);
+        overlay.record_volume(o, frame, volume_positions);
+      }
+    };
+    if (world.frames_done == 0) record(0);
+    world.after_frame = record;
+  }
+  std::vector<const Eigen::Matrix3Xd*> frame_positions(world.organs.size());
+
+  std::vector<Image> images(kPipelineDepth, Image(out.width, out.height));
+  render::Fxaa fxaa;
+  std::optional<BakeReader> bake;
+  if (!request.from_bake.empty()) bake.emplace(request.from_bake).check_matches(scene, world);
+  Progress progress(request.job.empty() ? scene.name : request.job, static_cast<int>(frames.size()),
+                    request.progress);
+
+  // Each stage adds to its own times only (one thread each).
+  PipelineStages stages;
+  stages.produce = [&](int i, int slot) {
+    const int f = frames[static_cast<std::size_t>(i)];
+    auto t0 = Clock::now();
+    if (!bake) world::advance_to_frame(world, f);  // Steps through every frame in between.
+    for (std::size_t o = 0; o < world.organs.size(); ++o) {
+      auto& buf = slots[static_cast<std::size_t>(slot)][o];
+      // The positions source: the simulation, or a bake of it.
+      if (bake) {
+        bake->read(f, static_cast<int>(o), buf.mesh_positions);
+      } else {
+        world::render_positions(world.organs[o], buf.mesh_positions);
+      }
+      const Eigen::Index n = buf.mesh_positions.cols();
+      const double* x = buf.mesh_positions.data();
+      for (Eigen::Index k = 0; k < 3 * n; ++k) buf.positions[k] = static_cast<float>(x[k]);
+      mesh::vertex_normals(x, static_cast<int>(n), world.organs[o].geometry.mesh.surface.triangles,
+                           buf.normals.data());
+      if (dynamic[o]) map_colors(*dynamic[o], world.organs[o], scene.organs[o], f / out.fps, buf);
+      frame_positions[o] = &buf.mesh_positions;
+    }
+    times.simulate_s += seconds_since(t0);
+    if (!overlay.empty()) {
+      t0 = Clock::now();
+      // From a bake, the volume history comes from the bake's frames (every one up to this).
+      for (int o : bake ? overlay.volume_organs() : std::vector<int>{}) {
+        for (int g = 0; g <= f; ++g) {
+          if (overlay.has_volume(o, g)) continue;
+          bake->read(g, o, volume_positions);
+          overlay.record_volume(o, g, volume_positions);
+        }
+      }
+      overlay.capture(f, frame_positions, overlay_produced[static_cast<std::size_t>(slot)]);
+      times.simulate_s += seconds_since(t0);  // This thread's own sum: the capture is counted with it.
+    }
+  };
+  stages.render = [&](int i, int slot) {
+    auto t0 = Clock::now();
+    for (std::size_t o = 0; o < surface_ids.size(); ++o) {
+      const auto& buf = slots[static_cast<std::size_t>(slot)][o];
+      renderer.update_surface(surface_ids[o], buf.positions.data(), buf.normals.data());
+      if (dynamic[o]) renderer.update_colors(surface_ids[o], buf.colors.data());
+    }
+    const double t_s = frames[static_cast<std::size_t>(i)] / out.fps;
+    set_view_cameras(scene, t_s, views);
+    renderer.draw(views, scene.lights, out.background);
+    times.render_s += seconds_since(t0);
+    t0 = Clock::now();
+    renderer.read_frame(images[static_cast<std::size_t>(slot)]);
+    times.readback_s += seconds_since(t0);
+    if (!overlay.empty()) overlay_rendered[static_cast<std::size_t>(slot)] = overlay_produced[static_cast<std::size_t>(slot)];
+  };
+  stages.consume = [&](int i, int slot) {
+    Image& image = images[static_cast<std::size_t>(slot)];
+    auto t0 = Clock::now();
+    if (out.antialias == scene::Antialias::kFxaa) fxaa.apply(image);
+    times.antialias_s += seconds_since(t0);
+    if (!overlay.empty()) {
+      // After FXAA: text and lines stay crisp.
+      t0 = Clock::now();
+      overlay.draw(image, overlay_rendered[static_cast<std::size_t>(slot)]);
+      times.overlay_s += seconds_since(t0);
+    }
+    t0 = Clock::now();
+    const int f = frames[static_cast<std::size_t>(i)];
+    cards.draw_captions(f, image);
+    if (video) video->write(image, video_offset + f);
+    if (png) png->write(image, f);
+    times.encode_s += seconds_since(t0);
+    ++times.frames;
+    progress.update(times.frames);
+  };
+  if (video_offset > 0) {
+    const auto t0 = Clock::now();
+    Image card(out.width, out.height);
+    for (int k = 0; k < video_offset; ++k) {
+      cards.draw_card(k, card);
+      video->write(card, k);
+    }
+    times.card_frames = video_offset;
+    times.encode_s += seconds_since(t0);
+  }
+  run_frame_pipeline(static_cast<int>(frames.size()), kPipelineDepth, request.overlap, stages);
+
+  const auto t0 = Clock::now();
+  if (video) video->finish();
+  if (png) png->finish();
+  times.encode_s += seconds_since(t0);
+  progress.finish();
+  times.wall_s = seconds_since(start);
+  return times;
+}
+
+std::string describe(const StageTimes& t) {
+  const double n = t.frames > 0 ? t.frames : 1;
+  char overlay[64] = "";
+  if (t.overlay_s > 0) std::snprintf(overlay, sizeof overlay, ", overlay %.2f ms/frame", 1e3 * t.overlay_s / n);
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "%d frames in %.2f s: simulate %.2f ms/frame, render %.2f ms/frame, read back %.2f ms/frame, "
+                "anti-alias %.2f ms/frame%s, encode %.2f ms/frame (stages overlapped)",
+                t.frames, t.wall_s, 1e3 * t.simulate_s / n, 1e3 * t.render_s / n, 1e3 * t.readback_s / n,
+                1e3 * t.antialias_s / n, overlay, 1e3 * t.encode_s / n);
+  std::string line = text;
+  if (t.card_frames > 0) line += "; encode includes " + std::to_string(t.card_frames) + " title-card frames";
+  return line;
+}
+
+}  // namespace systole::clip

@@ -1,0 +1,53 @@
+#pragma once
+// The simulated scene: every organ's geometry, body model and state, advanced together
+// on one clock.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mesh/organ.h"
+#include "scene/scene.h"
+#include "sim/model.h"
+#include "sim/reduced.h"
+#include "sim/state.h"
+
+namespace systole::world {
+
+struct OrganBody {
+  mesh::OrganGeometry geometry;  ///< The render mesh.
+  sim::Model model;
+  sim::State state;
+  sim::Embedding embedding;      ///< How the render mesh follows a reduced model; empty: full model.
+};
+
+/// The body's render-mesh positions now: the particles of a full model, or the mesh
+/// embedded in a reduced model's lattice. unit: m
+void render_positions(const OrganBody& body, Eigen::Matrix3Xd& out);
+
+struct World {
+  std::vector<OrganBody> organs;
+  int steps_per_frame = 1;  ///< The solver step divides the frame period exactly.
+  double dt_s = 0;          ///< unit: s
+  double fps = 30;          ///< Video frames per second. unit: 1/s
+  double frame_s = 1.0 / 30;  ///< Organ time between two frames (scene::Output::frame_period_s). unit: s
+  int start_frame = 0;      ///< Frames simulated before the clip's frame 0 (a loop's settling). unit: frames
+  int frames_done = 0;      ///< Frames the world has been advanced through, counting start_frame.
+  std::string step_reason;  ///< Why dt and substeps are what they are (for `validate`).
+  /// Called after every frame advance_to_frame steps through (with that frame's number),
+  /// also frames that are not rendered: a trace of a simulated signal needs them all.
+  std::function<void(int frame)> after_frame;
+};
+
+/// Loads or generates every organ and builds its body. The step is the scene's dt (or, for
+/// `dt: auto`, the longest every body allows: sim/step_size.h) rounded down so a whole
+/// number of steps makes one frame.
+World build_world(const scene::Scene& scene);
+
+/// Steps every organ to the time of clip frame `frame`, start_s + frame * frame_s
+/// (frames only move forward), checking the
+/// bodies' health at every frame. Throws Error(kDiverged) with the frame, the time, the
+/// cause and a remedy when a body blew up.
+void advance_to_frame(World& world, int frame);
+
+}  // namespace systole::world
