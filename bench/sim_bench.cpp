@@ -10,24 +10,24 @@
 #include "mesh/icosphere.h"
 #include "mesh/inspect.h"
 #include "sim/model.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 namespace {
 
 using namespace systole;
 
-sim::Model beating_ball(int levels, scene::SolverMethod method, int substeps) {
+sim::Model beating_ball(int levels, sim::Method method, int substeps) {
   mesh::OrganGeometry g;
   g.mesh.surface = mesh::icosphere(0.05, levels);  // 10 * 4^levels + 2 particles.
   g.report = mesh::inspect(g.mesh.surface);
   g.vertex_region.resize(g.mesh.surface.positions.size());
   for (std::size_t i = 0; i < g.vertex_region.size(); ++i) g.vertex_region[i] = g.mesh.surface.positions[i].y() > 0 ? 0 : -1;
-  scene::Organ organ;
+  sim::OrganParams organ;
   organ.name = "ball";
   organ.body.bending_N_per_m = 50;
-  scene::Region top;
+  sim::RegionParams top;
   top.name = "top";
-  top.drive.waveform = scene::Waveform::kCardiac;
+  top.drive.waveform = sim::Waveform::kCardiac;
   top.drive.rate_hz = 1.2;
   top.drive.amplitude = 0.12;
   organ.regions.push_back(top);
@@ -39,7 +39,7 @@ sim::Model beating_ball(int levels, scene::SolverMethod method, int substeps) {
 }
 
 /// One step of 1/240 s; counters: springs solved per second, substeps per second.
-void step_cost(benchmark::State& bench, scene::SolverMethod method, int substeps) {
+void step_cost(benchmark::State& bench, sim::Method method, int substeps) {
   const sim::Model m = beating_ball(static_cast<int>(bench.range(0)), method, substeps);
   sim::State s = sim::initial_state(m);
   sim::step(m, s, 1.0 / 240);  // Warm: builds caches (the implicit factorization's pattern).
@@ -54,9 +54,9 @@ void step_cost(benchmark::State& bench, scene::SolverMethod method, int substeps
   bench.counters["substeps/s"] = benchmark::Counter(substeps_done, benchmark::Counter::kIsRate);
 }
 
-void Xpbd(benchmark::State& s) { step_cost(s, scene::SolverMethod::kXpbd, 4); }
-void Explicit(benchmark::State& s) { step_cost(s, scene::SolverMethod::kExplicit, 4); }
-void Implicit(benchmark::State& s) { step_cost(s, scene::SolverMethod::kImplicit, 1); }
+void Xpbd(benchmark::State& s) { step_cost(s, sim::Method::kXpbd, 4); }
+void Explicit(benchmark::State& s) { step_cost(s, sim::Method::kExplicit, 4); }
+void Implicit(benchmark::State& s) { step_cost(s, sim::Method::kImplicit, 1); }
 
 // Levels 4, 5, 6: 2,562, 10,242 and 40,962 particles.
 BENCHMARK(Xpbd)->DenseRange(4, 6)->Unit(benchmark::kMillisecond);
@@ -66,7 +66,7 @@ BENCHMARK(Implicit)->DenseRange(4, 6)->Unit(benchmark::kMillisecond);
 /// The machine's limit for this kind of work: a plain structure-of-arrays spring-force
 /// loop (no constraint solve, no drive), the figure DESIGN.md quotes as ~170 M springs/s.
 void SpringLoopLimit(benchmark::State& bench) {
-  const sim::Model m = beating_ball(static_cast<int>(bench.range(0)), scene::SolverMethod::kExplicit, 1);
+  const sim::Model m = beating_ball(static_cast<int>(bench.range(0)), sim::Method::kExplicit, 1);
   const auto& sp = m.springs;
   const Eigen::Matrix3Xd x = m.rest_positions * 1.01;
   Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, x.cols());

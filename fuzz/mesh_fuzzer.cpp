@@ -14,9 +14,10 @@
 
 #include "common/error.h"
 #include "mesh/organ.h"
+#include "sim/from_scene.h"
 #include "sim/model.h"
 #include "sim/state.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 namespace {
 
@@ -47,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const mesh::OrganGeometry geometry = mesh::build_organ_geometry(organ);
     sim::ModelOptions options;
     options.clip_s = 1;
-    const sim::Model model = sim::build_model(organ, geometry, options);
+    const sim::Model model = sim::build_model(sim::organ_params(organ), geometry, options);
     sim::State state = sim::initial_state(model);
     for (int k = 0; k < 4; ++k) sim::step(model, state, options.dt_s);
     (void)sim::diagnose(model, state);

@@ -2,7 +2,7 @@
 
 #include <Eigen/Geometry>
 
-#include "sim/interactions.h"
+#include "common/spline.h"
 
 namespace systole::clip {
 
@@ -17,16 +17,10 @@ scene::Camera camera_at(const scene::Camera& camera, double t_s) {
     // The up vector turns too, so an axis other than up keeps the picture upright relative to it.
     now.up = turn * camera.up;
   } else if (!camera.path.empty()) {
-    // The same curve as grabs and kinematic regions (sim/interactions.h), for eye and target.
-    std::vector<scene::PathKey> eye, target;
-    eye.reserve(camera.path.size());
-    target.reserve(camera.path.size());
-    for (const scene::CameraKey& k : camera.path) {
-      eye.push_back({k.time_s, k.position_m});
-      target.push_back({k.time_s, k.target_m});
-    }
-    now.position_m = sim::path_position(eye, t_s);
-    now.target_m = sim::path_position(target, t_s);
+    // The same curve as grabs and kinematic regions (common/spline.h), for eye and target.
+    using Key = scene::CameraKey;
+    now.position_m = keyed_curve(camera.path, t_s, [](const Key& k) -> const Eigen::Vector3d& { return k.position_m; });
+    now.target_m = keyed_curve(camera.path, t_s, [](const Key& k) -> const Eigen::Vector3d& { return k.target_m; });
   }
   return now;
 }

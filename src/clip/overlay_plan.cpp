@@ -50,7 +50,7 @@ int region_index(const scene::Organ& organ, const std::string& name) {
 
 /// The times a drive's beats start (contraction onset): cycle boundaries, or the seeded
 /// irregular ones, found by bisection on the (monotonic) cycle count. unit: s
-std::vector<double> beat_onsets_s(const scene::Drive& d, const std::vector<double>& beats, double ramp_s,
+std::vector<double> beat_onsets_s(const sim::Drive& d, const std::vector<double>& beats, double ramp_s,
                                   double clip_s) {
   std::vector<double> out;
   const double horizon = clip_s + 1.0;
@@ -163,7 +163,7 @@ OverlayPlan::OverlayPlan(const scene::Scene& scene, const world::World& world) :
     } else {
       const int r = region_index(organ, t.region);
       const auto& model = world.organs[static_cast<std::size_t>(o)].model;
-      const auto& drive = organ.regions[static_cast<std::size_t>(r)].drive;
+      const auto& drive = model.regions[static_cast<std::size_t>(r)].drive;
       static const std::vector<double> regular;
       const auto& beats = static_cast<std::size_t>(r) < model.beat_boundaries.size()
                               ? model.beat_boundaries[static_cast<std::size_t>(r)]
@@ -189,7 +189,7 @@ OverlayPlan::OverlayPlan(const scene::Scene& scene, const world::World& world) :
         // same delay before the contraction it triggers; atria faster than any sinus rhythm
         // fibrillate or flutter: no P waves, but f-waves following their drive.
         const int a = t.atria.empty() ? -1 : region_index(organ, t.atria);
-        const scene::Drive* atria = a >= 0 ? &organ.regions[static_cast<std::size_t>(a)].drive : nullptr;
+        const sim::Drive* atria = a >= 0 ? &model.regions[static_cast<std::size_t>(a)].drive : nullptr;
         const auto& atrial_beats = a >= 0 && static_cast<std::size_t>(a) < model.beat_boundaries.size()
                                        ? model.beat_boundaries[static_cast<std::size_t>(a)]
                                        : regular;

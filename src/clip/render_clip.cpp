@@ -74,7 +74,7 @@ void map_colors(const DynamicColors& dynamic, const world::OrganBody& body, cons
     const std::vector<int>& vertex_region = body.geometry.vertex_region;
     buf.region_phi.resize(organ.regions.size());
     for (std::size_t r = 0; r < organ.regions.size(); ++r) {
-      buf.region_phi[r] = sim::activation(organ.regions[r].drive, t_s, body.model.ramp_s, r < beats.size() ? beats[r] : kRegular);
+      buf.region_phi[r] = sim::activation(body.model.regions[r].drive, t_s, body.model.ramp_s, r < beats.size() ? beats[r] : kRegular);
     }
     buf.values.resize(vertex_region.size());
     for (std::size_t v = 0; v < vertex_region.size(); ++v) {

@@ -3,17 +3,10 @@
 
 #include <vector>
 
-#include "mesh/inspect.h"
-#include "mesh/mesh.h"
+#include "mesh/geometry.h"
 #include "scene/scene.h"
 
 namespace systole::mesh {
-
-struct OrganGeometry {
-  OrganMesh mesh;                ///< World space, metres.
-  MeshReport report;             ///< What inspection found (after welding).
-  std::vector<int> vertex_region;  ///< Per vertex: index into organ.regions, or -1 (undriven body).
-};
 
 /// Loads the organ's file (already resolved by scene::load) or generates it, applies
 /// units, centring and the transform, inspects it, and assigns regions. Throws

@@ -1,5 +1,7 @@
 #include "sim/drive.h"
 
+#include "common/spline.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -17,7 +19,7 @@ double raised_cosine(double u, double width) {
 
 }  // namespace
 
-double drive_cycles(const scene::Drive& drive, double t_s, double ramp_s) {
+double drive_cycles(const Drive& drive, double t_s, double ramp_s) {
   if (drive.rate_end_hz <= 0 || ramp_s <= 0) return drive.rate_hz * t_s;
   const double f0 = drive.rate_hz, f1 = drive.rate_end_hz;
   const double t = std::min(t_s, ramp_s);
@@ -26,8 +28,7 @@ double drive_cycles(const scene::Drive& drive, double t_s, double ramp_s) {
   return cycles;
 }
 
-double waveform_value(const scene::Drive& drive, double u) {
-  using scene::Waveform;
+double waveform_value(const Drive& drive, double u) {
   switch (drive.waveform) {
     case Waveform::kNone:
       return 0.0;
@@ -57,20 +58,16 @@ double waveform_value(const scene::Drive& drive, double u) {
       const std::size_t i = std::min(static_cast<std::size_t>(x), s.size() - 1);
       const double f = x - double(i);
       // Periodic Catmull-Rom: smooth, passes through every sample.
-      const std::size_t n = s.size();
-      const double p0 = s[(i + n - 1) % n], p1 = s[i], p2 = s[(i + 1) % n], p3 = s[(i + 2) % n];
-      const double v = 0.5 * ((2 * p1) + (-p0 + p2) * f + (2 * p0 - 5 * p1 + 4 * p2 - p3) * f * f +
-                              (-p0 + 3 * p1 - 3 * p2 + p3) * f * f * f);
-      return std::clamp(v, 0.0, 1.0);
+      return std::clamp(periodic_catmull_rom(s, i, f), 0.0, 1.0);
     }
   }
   return 0.0;
 }
 
-double activation(const scene::Drive& drive, double t_s, double ramp_s, const std::vector<double>& beats) {
-  if (drive.waveform == scene::Waveform::kNone || drive.rate_hz <= 0) return 0.0;
+double activation(const Drive& drive, double t_s, double ramp_s, const std::vector<double>& beats) {
+  if (drive.waveform == Waveform::kNone || drive.rate_hz <= 0) return 0.0;
   const double local_t = t_s - drive.delay_s;
-  if (local_t < 0 && drive.waveform != scene::Waveform::kSine && drive.waveform != scene::Waveform::kFourier) {
+  if (local_t < 0 && drive.waveform != Waveform::kSine && drive.waveform != Waveform::kFourier) {
     return 0.0;  // Templates start at rest; the delay only postpones the first beat.
   }
   const double cycles = drive_cycles(drive, local_t, ramp_s);
@@ -83,7 +80,7 @@ double activation(const scene::Drive& drive, double t_s, double ramp_s, const st
   return waveform_value(drive, u);
 }
 
-void region_contractions(const std::vector<scene::Region>& regions, const std::vector<std::vector<double>>& beats,
+void region_contractions(const std::vector<RegionParams>& regions, const std::vector<std::vector<double>>& beats,
                          double t_s, double ramp_s, Eigen::VectorXd& out) {
   static const std::vector<double> regular;
   for (std::size_t r = 0; r < regions.size(); ++r) {
@@ -115,8 +112,7 @@ std::vector<double> irregular_beats(double irregularity, std::uint64_t seed, std
   return b;
 }
 
-double highest_frequency_hz(const scene::Drive& drive) {
-  using scene::Waveform;
+double highest_frequency_hz(const Drive& drive) {
   const double rate = std::max(drive.rate_hz, drive.rate_end_hz);
   switch (drive.waveform) {
     case Waveform::kNone:

@@ -7,22 +7,22 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene/scene.h"
+#include "sim/params.h"
 
 namespace systole::sim {
 
 /// Number of cycles completed by time t_s: the integral of the rate, which may ramp
 /// linearly from rate_hz to rate_end_hz over [0, ramp_s] and stay there. unit: cycles
-double drive_cycles(const scene::Drive& drive, double t_s, double ramp_s);
+double drive_cycles(const Drive& drive, double t_s, double ramp_s);
 
 /// phi of one period's waveform at fraction u of the period, u in [0, 1). unit: 1
-double waveform_value(const scene::Drive& drive, double u);
+double waveform_value(const Drive& drive, double u);
 
 /// The activation phi at time t_s (delay applied; before the delay the region is at rest
 /// phase 0). `ramp_s` is the clip length over which a rate ramp runs. `beats`, when not
 /// empty, are irregular beat boundaries in cycles (see irregular_beats): beat k spans
 /// cycles [beats[k], beats[k+1]) and the waveform is stretched over it.
-double activation(const scene::Drive& drive, double t_s, double ramp_s, const std::vector<double>& beats = {});
+double activation(const Drive& drive, double t_s, double ramp_s, const std::vector<double>& beats = {});
 
 /// Seeded irregular beat boundaries for a drive with irregularity r > 0: b0 = 0 and
 /// b(k+1) = b(k) + 1 + r u(k), u(k) uniform in [-1, 1] from a hash of (seed, stream, k), so
@@ -31,11 +31,11 @@ std::vector<double> irregular_beats(double irregularity, std::uint64_t seed, std
 
 /// Rest-length contraction of every region at time t: amplitude * phi(t), into `out`
 /// (sized to the region count).
-void region_contractions(const std::vector<scene::Region>& regions, const std::vector<std::vector<double>>& beats,
+void region_contractions(const std::vector<RegionParams>& regions, const std::vector<std::vector<double>>& beats,
                          double t_s, double ramp_s, Eigen::VectorXd& out);
 
 /// Highest frequency present in the drive at any time: rate x highest harmonic, or the
 /// sharpest template's equivalent. unit: Hz
-double highest_frequency_hz(const scene::Drive& drive);
+double highest_frequency_hz(const Drive& drive);
 
 }  // namespace systole::sim

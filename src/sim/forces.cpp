@@ -3,7 +3,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "sim/interactions.h"
+#include "sim/constraints/volume.h"
+#include "sim/solvers/substep.h"
 
 namespace systole::sim {
 
@@ -33,21 +34,11 @@ void internal_and_scripted_forces(const Model& model, const Eigen::Matrix3Xd& x,
   }
   if (model.volume.enabled) {
     // Pressure from the volume energy E = (K / 2V0) (V - V0)^2: f = -(V - V0) / compliance * dV/dx.
-    double six_v = 0;
-    for (const auto& t3 : model.volume.triangles) six_v += x.col(t3[0]).dot(x.col(t3[1]).cross(x.col(t3[2])));
-    const double pressure = -(six_v / 6.0 - driven_rest_volume(model, t)) / model.volume.compliance_m5_per_N;
-    for (const auto& t3 : model.volume.triangles) {
-      const auto p0 = x.col(t3[0]), p1 = x.col(t3[1]), p2 = x.col(t3[2]);
-      f.col(t3[0]) += pressure / 6.0 * p1.cross(p2);
-      f.col(t3[1]) += pressure / 6.0 * p2.cross(p0);
-      f.col(t3[2]) += pressure / 6.0 * p0.cross(p1);
-    }
+    const double volume = volume_and_gradient(x, model.volume.triangles, state.volume_gradient);
+    const double pressure = -(volume - driven_rest_volume(model, t)) / model.volume.compliance_m5_per_N;
+    f += pressure * state.volume_gradient;
   }
-  for (const Poke& p : model.pokes) {
-    const double factor = poke_factor(p, t, model.ramp_s);
-    if (factor == 0) continue;
-    for (int i : p.particles) f.col(i) += factor * p.force_per_particle_N;
-  }
+  for_each_poke(model, t, [&](int i, double factor, const Eigen::Vector3d& force_N) { f.col(i) += factor * force_N; });
   for (const Grab& g : model.grabs) {
     if (!grab_active(g, t)) continue;
     const Eigen::Vector3d handle = handle_position(g, t);

@@ -23,7 +23,7 @@ inline double driven_rest_length(const Springs& sp, int j, const Eigen::VectorXd
 /// uses it in place of rest_m3. unit: m^3
 inline double driven_rest_volume(const Model& model, double t_s) {
   const VolumeConstraint& vol = model.volume;
-  if (vol.drive.waveform == scene::Waveform::kNone) return vol.rest_m3;
+  if (vol.drive.waveform == Waveform::kNone) return vol.rest_m3;
   return vol.rest_m3 * (1.0 + vol.drive.amplitude * activation(vol.drive, t_s, model.ramp_s, vol.beat_boundaries));
 }
 

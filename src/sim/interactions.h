@@ -9,7 +9,7 @@ namespace systole::sim {
 
 /// A path at time t: a Catmull-Rom curve through the keys (smooth, passing through every
 /// key), held at the first and last key outside them. unit: m
-Eigen::Vector3d path_position(const std::vector<scene::PathKey>& path, double t_s);
+Eigen::Vector3d path_position(const std::vector<PathKey>& path, double t_s);
 
 /// The grab's handle at time t. unit: m
 inline Eigen::Vector3d handle_position(const Grab& grab, double t_s) { return path_position(grab.path, t_s); }

@@ -2,12 +2,14 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 
 #include "common/error.h"
 #include "sim/drive.h"
 #include "sim/graph_coloring.h"
+#include "sim/solvers/step_size.h"
 
 namespace systole::sim {
 namespace {
@@ -57,16 +59,15 @@ std::vector<int> particles_near(const Eigen::Matrix3Xd& x, const Eigen::Vector3d
   return found;
 }
 
-void add_interactions(Model& m, const std::vector<scene::Interaction>& interactions, double reach_m) {
+void add_interactions(Model& m, const std::vector<InteractionParams>& interactions, double reach_m) {
   for (const auto& in : interactions) {
     std::vector<int> patch = particles_near(m.rest_positions, in.at_m, in.radius_m + reach_m);
     if (patch.empty()) {
       throw Error(ExitCode::kDataError,
-                  in.origin.file + ":" + std::to_string(in.origin.line) + ":" + std::to_string(in.origin.column) +
-                      ": interaction on '" + m.name + "' touches no vertex: nothing of the organ lies within " +
+                  in.where + ": interaction on '" + m.name + "' touches no vertex: nothing of the organ lies within " +
                       std::to_string(in.radius_m) + " m of `at`; move `at` onto the surface or raise `radius`");
     }
-    if (in.kind == scene::InteractionKind::kPoke) {
+    if (in.kind == InteractionKind::kPoke) {
       Poke p;
       p.force_per_particle_N = in.force_N / double(patch.size());
       p.particles = std::move(patch);
@@ -87,12 +88,6 @@ void add_interactions(Model& m, const std::vector<scene::Interaction>& interacti
 
 }  // namespace
 
-double enclosed_volume(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles) {
-  double six_v = 0;
-  for (const auto& t : triangles) six_v += x.col(t[0]).dot(x.col(t[1]).cross(x.col(t[2])));
-  return six_v / 6.0;
-}
-
 Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles,
                               double total_mass_kg) {
   Eigen::VectorXd area = Eigen::VectorXd::Zero(x.cols());
@@ -111,7 +106,7 @@ Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen
   return mass;
 }
 
-Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options) {
+Model build_model(const OrganParams& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options) {
   const auto& surface = geometry.mesh.surface;
   BodyParts parts;
   const int n = static_cast<int>(surface.positions.size());
@@ -135,7 +130,7 @@ Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry
   return build_model(organ, std::move(parts), options);
 }
 
-Model build_model(const scene::Organ& organ, BodyParts parts, const ModelOptions& options) {
+Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions& options) {
   Model m;
   m.name = organ.name;
   m.method = options.solver.method;
@@ -149,7 +144,7 @@ Model build_model(const scene::Organ& organ, BodyParts parts, const ModelOptions
   for (std::size_t r = 0; r < m.regions.size(); ++r) {
     const auto& d = m.regions[r].drive;
     std::vector<double> beats;
-    if (d.irregularity > 0 && d.waveform != scene::Waveform::kNone) {
+    if (d.irregularity > 0 && d.waveform != Waveform::kNone) {
       beats = irregular_beats(d.irregularity, options.seed, r, drive_cycles(d, options.clip_s, options.clip_s));
     }
     m.beat_boundaries.push_back(std::move(beats));
@@ -201,13 +196,8 @@ Model build_model(const scene::Organ& organ, BodyParts parts, const ModelOptions
   for (int idx : order) {
     const int i = a[idx], j = b[idx];
     const int ri = region_of(i), rj = region_of(j);
-    // Region parameters blend across a boundary: a spring joining two regions takes the
-    // mean of their scales, so neighbouring regions of very different stiffness share a
-    // transition ring instead of a seam.
-    const double stiffness_scale = 0.5 * ((ri >= 0 ? m.regions[ri].stiffness_scale : 1.0) +
-                                          (rj >= 0 ? m.regions[rj].stiffness_scale : 1.0));
-    const double damping_scale = 0.5 * ((ri >= 0 ? m.regions[ri].damping_scale : 1.0) +
-                                        (rj >= 0 ? m.regions[rj].damping_scale : 1.0));
+    const double stiffness_scale = boundary_blend(m.regions, ri, rj, &RegionParams::stiffness_scale);
+    const double damping_scale = boundary_blend(m.regions, ri, rj, &RegionParams::damping_scale);
     s.a.push_back(i);
     s.b.push_back(j);
     s.rest_m.push_back((m.rest_positions.col(i) - m.rest_positions.col(j)).norm());
@@ -225,21 +215,50 @@ Model build_model(const scene::Organ& organ, BodyParts parts, const ModelOptions
     m.volume.compliance_m5_per_N = m.volume.rest_m3 / (organ.body.volume_stiffness_Pa * parts.volume_stiffness_scale);
     m.volume.drive = organ.body.volume_drive;
     m.volume.drive.amplitude *= parts.volume_drive_scale;
-    const scene::Drive& d = m.volume.drive;
-    if (d.irregularity > 0 && d.waveform != scene::Waveform::kNone) {
+    const Drive& d = m.volume.drive;
+    if (d.irregularity > 0 && d.waveform != Waveform::kNone) {
       // Its own stream after the regions', so adding it changes no region's beats.
       m.volume.beat_boundaries = irregular_beats(d.irregularity, options.seed, m.regions.size(),
                                                  drive_cycles(d, options.clip_s, options.clip_s));
     }
-  } else if (organ.body.volume_drive.waveform != scene::Waveform::kNone) {
-    const scene::Origin& at = organ.origin;  // file:line of the organ, as scene errors give it
-    const std::string place = at.file.empty() ? "" : at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": ";
-    throw Error(ExitCode::kDataError, place + "organ '" + organ.name + "': body.volume_drive drives the rest volume, so it needs " +
+  } else if (organ.body.volume_drive.waveform != Waveform::kNone) {
+    throw Error(ExitCode::kDataError, organ.where + "organ '" + organ.name + "': body.volume_drive drives the rest volume, so it needs " +
                                           (organ.body.volume_stiffness_Pa > 0
                                                ? std::string("a closed surface (this one is open or non-manifold: see the mesh report)")
                                                : std::string("body.volume_stiffness > 0")));
   }
   add_interactions(m, options.interactions, parts.interaction_reach_m);
+  if (options.solver.auto_substeps) {
+    // solver.dt: auto - as many substeps as this body's stiffness needs at the world's step.
+    m.substeps = std::max(1, static_cast<int>(std::ceil(options.dt_s / step_limits(m).max_substep_s - 1e-9)));
+  }
+  return m;
+}
+
+Model with_method(const Model& base, Method method) {
+  Model m = base;
+  m.method = method;
+  return m;
+}
+
+double boundary_blend(const std::vector<RegionParams>& regions, int region_a, int region_b,
+                      double RegionParams::*scale) {
+  return 0.5 * ((region_a >= 0 ? regions[region_a].*scale : 1.0) + (region_b >= 0 ? regions[region_b].*scale : 1.0));
+}
+
+Model with_regions(const Model& base, const std::vector<RegionParams>& regions) {
+  Model m = base;
+  Springs& sp = m.springs;
+  const auto stiffness = &RegionParams::stiffness_scale;
+  for (int j = 0; j < sp.size(); ++j) {
+    sp.compliance_m_per_N[j] *= boundary_blend(base.regions, sp.region_a[j], sp.region_b[j], stiffness) /
+                                boundary_blend(regions, sp.region_a[j], sp.region_b[j], stiffness);
+  }
+  m.regions = regions;
+  // A regular drive has no beat boundaries; an irregular one keeps the scene's seeded beats.
+  for (std::size_t r = 0; r < regions.size() && r < m.beat_boundaries.size(); ++r) {
+    if (regions[r].drive.irregularity == 0) m.beat_boundaries[r].clear();
+  }
   return m;
 }
 

@@ -1,15 +1,17 @@
 #pragma once
 // sim::Model: everything about a soft body that stepping never changes - rest shape,
 // masses, constraints, regions and their drives. Built once from an organ's geometry and
-// scene settings (MuJoCo's mjModel / mjData split: the changing part is sim::State).
+// parameters (MuJoCo's mjModel / mjData split: the changing part is sim::State). Nothing
+// writes a Model after build_model (or with_regions) returns: every solver takes it const.
 
 #include <Eigen/Core>
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "mesh/organ.h"
-#include "scene/scene.h"
+#include "mesh/geometry.h"
+#include "sim/constraints/volume.h"
+#include "sim/params.h"
 
 namespace systole::sim {
 
@@ -36,7 +38,7 @@ struct VolumeConstraint {
   std::vector<Eigen::Vector3i> triangles;  ///< The closed surface, outward CCW.
   double rest_m3 = 0;                      ///< V0, the rest volume undriven. unit: m^3
   double compliance_m5_per_N = 0;          ///< V0 / bulk modulus, for C = V - V0(t). unit: m^5/N
-  scene::Drive drive;                      ///< V0(t) = V0 (1 + amplitude phi(t)); kNone: constant.
+  Drive drive;                      ///< V0(t) = V0 (1 + amplitude phi(t)); kNone: constant.
   std::vector<double> beat_boundaries;     ///< The drive's seeded irregular beats, else empty.
 };
 
@@ -47,7 +49,7 @@ struct Poke {
   Eigen::Vector3d force_per_particle_N = Eigen::Vector3d::Zero();  ///< unit: N
   double start_s = 0;  ///< unit: s
   double end_s = 0;    ///< unit: s
-  scene::Drive drive;  ///< waveform kNone: a one-off push.
+  Drive drive;  ///< waveform kNone: a one-off push.
 };
 
 /// A patch of particles held by stiff zero-length springs to a handle that moves along a
@@ -55,14 +57,15 @@ struct Poke {
 struct Grab {
   std::vector<int> particles;
   std::vector<Eigen::Vector3d> offsets_m;  ///< Each particle's rest offset from the handle. unit: m
-  std::vector<scene::PathKey> path;
+  std::vector<PathKey> path;
   double compliance_m_per_N = 0;           ///< unit: m/N
 };
 
 /// Zero-length attachments of every free particle to a moving target position: how
 /// training couples the body to key-frame motion (train/). Each is three XPBD
 /// constraints C = x_i - target_i(t) (Macklin et al. 2016, eq. 18, target inverse mass 0),
-/// so State::attachment_lambda / h^2 is the force the coupling exerts. XPBD only.
+/// so State::attachment_lambda / h^2 is the force the coupling exerts. XPBD only. Not part
+/// of the Model: whoever couples a body passes it to sim::step beside the model.
 struct Attachments {
   /// Writes every particle's target at time t into `out` (3 x particles); empty: none. unit: m
   std::function<void(double t_s, Eigen::Matrix3Xd& out)> target;
@@ -75,30 +78,19 @@ struct Attachments {
 /// simulated (inverse mass 0), and pull their neighbours along through the springs.
 struct KinematicRegion {
   std::vector<int> particles;
-  std::vector<scene::PathKey> motion;  ///< Offsets from the rest positions over time.
-};
-
-/// What a model is built with besides the organ: the scene's solver, world and timeline.
-struct ModelOptions {
-  scene::Solver solver;
-  double dt_s = 1.0 / 240.0;  ///< The step the solver will be called with (auto dt resolved). unit: s
-  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< unit: m/s^2
-  double clip_s = 0;          ///< The clip's length: rate ramps span it. unit: s
-  std::uint64_t seed = 1;     ///< The scene's seed: irregular rhythms.
-  std::vector<scene::Interaction> interactions;  ///< Those touching this organ.
-  scene::Floor floor;
+  std::vector<PathKey> motion;  ///< Offsets from the rest positions over time.
 };
 
 struct Model {
   std::string name;                         ///< The organ's name, for messages.
-  scene::SolverMethod method = scene::SolverMethod::kXpbd;
-  int substeps = 4;
+  Method method = Method::kXpbd;
+  int substeps = 4;                         ///< Per step; chosen by the builder when solver.auto_substeps.
   int threads = 1;                          ///< Threads for the spring loops (same result at any count).
   Eigen::Matrix3Xd rest_positions;          ///< unit: m
   Eigen::VectorXd inverse_mass;             ///< unit: 1/kg; 0 = pinned.
   Springs springs;
   VolumeConstraint volume;
-  std::vector<scene::Region> regions;       ///< Drives by region index.
+  std::vector<RegionParams> regions;       ///< Drives by region index.
   /// Per region: the beat boundaries in cycles when its drive is irregular (seeded), else empty.
   std::vector<std::vector<double>> beat_boundaries;
   std::vector<int> vertex_region;           ///< Per particle; -1 = undriven body.
@@ -108,9 +100,8 @@ struct Model {
   double rest_extent_m = 0;                 ///< Bounding-box diagonal of the rest shape. unit: m
   std::vector<Poke> pokes;
   std::vector<Grab> grabs;
-  Attachments attachments;                  ///< Training's coupling to a target; empty otherwise.
   std::vector<KinematicRegion> kinematic;
-  scene::Floor floor;
+  Floor floor;
 
   int particle_count() const { return static_cast<int>(rest_positions.cols()); }
 };
@@ -136,13 +127,24 @@ Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen
 
 /// The body of one organ from given parts (what build_model does after taking the parts
 /// from the surface). Same errors as build_model.
-Model build_model(const scene::Organ& organ, BodyParts parts, const ModelOptions& options);
+Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions& options);
+
+/// The same body with other region drives and stiffness scales (training tries many):
+/// spring compliances follow the new scales with build_model's blending across region
+/// boundaries; an irregular drive keeps the seeded beats of `base`, a regular one has none.
+Model with_regions(const Model& base, const std::vector<RegionParams>& regions);
+
+/// The same body stepped by another solver (training records its coupling with XPBD).
+Model with_method(const Model& base, Method method);
+
+/// The mean of a spring's two end regions' scale (`scale` picks stiffness or damping; an
+/// undriven end counts 1): how region parameters blend across a boundary, so neighbouring
+/// regions of very different stiffness share a transition ring instead of a seam. unit: 1
+double boundary_blend(const std::vector<RegionParams>& regions, int region_a, int region_b,
+                      double RegionParams::*scale);
 
 /// Builds the body of one organ, every surface vertex a particle. Throws Error(kDataError) when an interaction touches no
 /// particle (naming it and where it was written).
-Model build_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options);
-
-/// Enclosed volume of a closed, outward-oriented triangle surface (divergence theorem).
-double enclosed_volume(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles);
+Model build_model(const OrganParams& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options);
 
 }  // namespace systole::sim

@@ -42,12 +42,12 @@ struct Lattice {
   }
 };
 
-int region_detail(const scene::Organ& organ, int region) { return region >= 0 ? organ.regions[region].detail : 1; }
+int region_detail(const OrganParams& organ, int region) { return region >= 0 ? organ.regions[region].detail : 1; }
 
 /// Marks the coarse voxels the surface passes through, with the finest detail of the
 /// regions there: every vertex, and points over every triangle no farther apart than
 /// half a finest voxel, so a long triangle marks every voxel it crosses.
-void mark_surface(const scene::Organ& organ, const mesh::OrganGeometry& geometry, Lattice& lat) {
+void mark_surface(const OrganParams& organ, const mesh::OrganGeometry& geometry, Lattice& lat) {
   const auto& surface = geometry.mesh.surface;
   auto mark = [&](const Eigen::Vector3d& p, int detail) {
     int& d = lat.coarse_detail[lat.coarse_cell(p)];
@@ -211,7 +211,7 @@ void embed(const Embedding& e, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out)
   }
 }
 
-ReducedBody build_reduced_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry,
+ReducedBody build_reduced_model(const OrganParams& organ, const mesh::OrganGeometry& geometry,
                                 const ModelOptions& options) {
   const auto& surface = geometry.mesh.surface;
   const int vertex_count = static_cast<int>(surface.positions.size());

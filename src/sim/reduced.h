@@ -9,8 +9,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "mesh/organ.h"
-#include "scene/scene.h"
+#include "mesh/geometry.h"
+#include "sim/params.h"
 #include "sim/model.h"
 
 namespace systole::sim {
@@ -40,7 +40,7 @@ struct ReducedBody {
 /// edges, n the surface normal, d the spring direction). Volume: the lattice hull
 /// (outer faces of the filled voxels) with bulk modulus and volume drive rescaled by the
 /// hull's area and volume so that the same surface motion meets the same pressure.
-ReducedBody build_reduced_model(const scene::Organ& organ, const mesh::OrganGeometry& geometry,
+ReducedBody build_reduced_model(const OrganParams& organ, const mesh::OrganGeometry& geometry,
                                 const ModelOptions& options);
 
 /// The render-mesh positions of particles x: out = x when the embedding is empty. unit: m

@@ -12,7 +12,7 @@ State initial_state(const Model& model) {
   s.region_contraction = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.regions.size()));
   s.volume_gradient = Eigen::Matrix3Xd::Zero(3, model.volume.enabled ? n : 0);
   s.force = Eigen::Matrix3Xd::Zero(3, n);
-  s.attachment_lambda = Eigen::Matrix3Xd::Zero(3, model.attachments.enabled() ? n : 0);
+  s.attachment_lambda = Eigen::Matrix3Xd::Zero(3, n);  // Written only while a coupling is passed to step.
   s.attachment_target = s.attachment_lambda;
   return s;
 }

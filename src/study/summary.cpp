@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "clip/render_clip.h"
-#include "sim/step_size.h"
+#include "sim/solvers/step_size.h"
 
 namespace systole::study {
 

@@ -3,18 +3,18 @@
 #include <Eigen/Dense>
 
 #include "sim/forces.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 namespace systole::train {
 
 RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, double coupling_N_per_m,
                                const std::vector<int>& fitted) {
-  sim::Model model = base;
-  model.method = scene::SolverMethod::kXpbd;  // Attachments are XPBD constraints.
-  const TargetMotion* target = &problem.target;
+  const sim::Model model = sim::with_method(base, sim::Method::kXpbd);  // Attachments are XPBD constraints.
+  const TargetMotion& target = problem.target;
   const double rate = problem.rate_hz;
-  model.attachments.target = [target, rate](double t_s, Eigen::Matrix3Xd& out) { target->positions(rate * t_s, out); };
-  model.attachments.compliance_m_per_N = 1.0 / coupling_N_per_m;
+  sim::Attachments coupling;
+  coupling.target = [&target, rate](double t_s, Eigen::Matrix3Xd& out) { target.positions(rate * t_s, out); };
+  coupling.compliance_m_per_N = 1.0 / coupling_N_per_m;
 
   RecordedSignals rec;
   rec.contraction.assign(model.regions.size(), {});
@@ -27,7 +27,7 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
   Eigen::MatrixXd jacobian(3 * n, columns);
   double force_sum = 0;
   for (int k = 0; k < problem.settle_steps + problem.measure_steps; ++k) {
-    sim::step(model, state, problem.dt_s);
+    sim::step(model, state, problem.dt_s, &coupling);
     if (k < problem.settle_steps) continue;
     // Force of the attachments on each particle in the last substep (pinned ones have none).
     const Eigen::Matrix3Xd force = state.attachment_lambda / (h * h);

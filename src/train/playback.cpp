@@ -5,7 +5,8 @@
 #include <numbers>
 
 #include "world/world.h"
-#include "sim/step.h"
+#include "sim/from_scene.h"
+#include "sim/solvers/step.h"
 
 namespace systole::train {
 
@@ -126,20 +127,7 @@ PlaybackError play(const Problem& problem, const sim::Model& model) {
 }
 
 sim::Model with_regions(const sim::Model& base, const std::vector<scene::Region>& regions) {
-  sim::Model m = base;
-  auto blend = [](const std::vector<scene::Region>& rs, int a, int b) {
-    return 0.5 * ((a >= 0 ? rs[a].stiffness_scale : 1.0) + (b >= 0 ? rs[b].stiffness_scale : 1.0));
-  };
-  sim::Springs& sp = m.springs;
-  for (int j = 0; j < sp.size(); ++j) {
-    sp.compliance_m_per_N[j] *= blend(base.regions, sp.region_a[j], sp.region_b[j]) / blend(regions, sp.region_a[j], sp.region_b[j]);
-  }
-  m.regions = regions;
-  // A regular drive has no beat boundaries; an irregular one keeps the scene's seeded beats.
-  for (std::size_t r = 0; r < regions.size() && r < m.beat_boundaries.size(); ++r) {
-    if (regions[r].drive.irregularity == 0) m.beat_boundaries[r].clear();
-  }
-  return m;
+  return sim::with_regions(base, sim::region_params(regions));
 }
 
 }  // namespace systole::train

@@ -54,9 +54,7 @@ struct PlaybackError {
 /// against the target after the settling steps.
 PlaybackError play(const Problem& problem, const sim::Model& model);
 
-/// The base model with the regions' drives and stiffness scales replaced: spring
-/// compliances follow the new stiffness scales with the same blending across region
-/// boundaries as sim::build_model.
+/// The base model with the scene regions' drives and stiffness scales (sim::with_regions).
 sim::Model with_regions(const sim::Model& base, const std::vector<scene::Region>& regions);
 
 /// Phase of the first harmonic at `rate_hz` of samples taken every dt from t0. unit: rad

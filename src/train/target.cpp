@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "common/spline.h"
 #include "mesh/animation.h"
 #include "mesh/import.h"
 #include "mesh/procedural.h"
@@ -29,12 +30,7 @@ void TargetMotion::positions(double u, Eigen::Matrix3Xd& out) const {
   if (local < 0) local += 1.0;
   const double f = local / span;
   // Uniform Catmull-Rom: smooth, passes through every key.
-  const Eigen::Matrix3Xd& p0 = poses_[(i + n - 1) % n];
-  const Eigen::Matrix3Xd& p1 = poses_[i];
-  const Eigen::Matrix3Xd& p2 = poses_[j];
-  const Eigen::Matrix3Xd& p3 = poses_[(j + 1) % n];
-  const double f2 = f * f, f3 = f2 * f;
-  out = 0.5 * ((2 * p1) + (p2 - p0) * f + (2 * p0 - 5 * p1 + 4 * p2 - p3) * f2 + (3 * p1 - p0 - 3 * p2 + p3) * f3);
+  out = catmull_rom(poses_[(i + n - 1) % n], poses_[i], poses_[j], poses_[(j + 1) % n], f);
 }
 
 namespace {

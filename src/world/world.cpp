@@ -5,8 +5,9 @@
 #include <sstream>
 
 #include "common/error.h"
-#include "sim/step.h"
-#include "sim/step_size.h"
+#include "sim/from_scene.h"
+#include "sim/solvers/step.h"
+#include "sim/solvers/step_size.h"
 
 namespace systole::world {
 
@@ -16,7 +17,7 @@ namespace {
 int steps_per_frame(double frame_s, double max_step_s, bool round_down) {
   const double n = frame_s / max_step_s;
   // A step of 1e-300 s is in range for the schema but no int counts it: refuse it here,
-  // before the resource limits (app/limits.h) can say what it would cost.
+  // before the resource limits (clip/limits.h) can say what it would cost.
   if (!(n < 1e9)) {
     std::ostringstream m;
     m << "a step of " << max_step_s << " s makes " << n << " steps per frame of " << frame_s
@@ -26,22 +27,12 @@ int steps_per_frame(double frame_s, double max_step_s, bool round_down) {
   return std::max(1, static_cast<int>(round_down ? std::ceil(n - 1e-9) : std::lround(n)));
 }
 
-/// For `dt: auto`: the step every body allows, then each body's substeps.
-void choose_steps(World& w, double frame_s) {
+/// For `dt: auto`: the longest step every organ's drives allow (each body then chooses its
+/// own substeps for it when it is built).
+double auto_max_step_s(const scene::Scene& scene, double frame_s) {
   double max_step = frame_s;
-  std::vector<sim::StepLimits> limits;
-  for (const auto& body : w.organs) {
-    limits.push_back(sim::step_limits(body.model));
-    max_step = std::min(max_step, limits.back().max_step_s);
-  }
-  w.steps_per_frame = steps_per_frame(frame_s, max_step, true);
-  w.dt_s = frame_s / w.steps_per_frame;
-  w.step_reason = "auto:";
-  for (std::size_t o = 0; o < w.organs.size(); ++o) {
-    auto& model = w.organs[o].model;
-    model.substeps = std::max(1, static_cast<int>(std::ceil(w.dt_s / limits[o].max_substep_s - 1e-9)));
-    w.step_reason += " " + model.name + ": " + limits[o].reason + ".";
-  }
+  for (const auto& organ : scene.organs) max_step = std::min(max_step, sim::max_step_s(sim::region_params(organ.regions)));
+  return max_step;
 }
 
 }  // namespace
@@ -58,33 +49,30 @@ World build_world(const scene::Scene& scene) {
   const double frame_s = scene.output.frame_period_s();
   w.frame_s = frame_s;
   w.start_frame = scene.output.start_frame;
-  w.steps_per_frame = steps_per_frame(frame_s, scene.solver.dt_s, false);
+  if (scene.solver.auto_dt) {
+    w.steps_per_frame = steps_per_frame(frame_s, auto_max_step_s(scene, frame_s), true);
+    w.step_reason = "auto:";
+  } else {
+    w.steps_per_frame = steps_per_frame(frame_s, scene.solver.dt_s, false);
+    w.step_reason = "as the scene sets (solver.dt, solver.substeps), rounded so whole steps make a frame";
+  }
   w.dt_s = frame_s / w.steps_per_frame;
-  w.step_reason = "as the scene sets (solver.dt, solver.substeps), rounded so whole steps make a frame";
   for (const auto& organ : scene.organs) {
     OrganBody body;
     body.geometry = mesh::build_organ_geometry(organ);
-    sim::ModelOptions options;
-    options.solver = scene.solver;
-    options.dt_s = w.dt_s;
-    options.gravity = scene.gravity;
-    options.clip_s = scene.output.start_frame * frame_s + scene.output.duration_s;  // Organ time at the clip's end.
-    options.seed = scene.seed;
-    options.floor = scene.floor;
-    for (const auto& in : scene.interactions) {
-      if (in.organ == organ.name) options.interactions.push_back(in);
-    }
+    const sim::OrganParams params = sim::organ_params(organ);
+    const sim::ModelOptions options = sim::model_options(scene, organ.name, w.dt_s);
     if (organ.body.lattice > 0) {
-      sim::ReducedBody reduced = sim::build_reduced_model(organ, body.geometry, options);
+      sim::ReducedBody reduced = sim::build_reduced_model(params, body.geometry, options);
       body.model = std::move(reduced.model);
       body.embedding = std::move(reduced.embedding);
     } else {
-      body.model = sim::build_model(organ, body.geometry, options);
+      body.model = sim::build_model(params, body.geometry, options);
     }
     body.state = sim::initial_state(body.model);
+    if (scene.solver.auto_dt) w.step_reason += " " + body.model.name + ": " + sim::step_limits(body.model).reason + ".";
     w.organs.push_back(std::move(body));
   }
-  if (scene.solver.auto_dt) choose_steps(w, frame_s);
   return w;
 }
 

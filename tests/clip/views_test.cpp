@@ -171,7 +171,7 @@ TEST(ColorMaps, ContractingRegionTurnsTowardsTheShortenedColour) {
   EXPECT_LT(peak, -0.02) << "the driven wall is shortened";
   const scene::Color at_rest = map.at(rest), contracted = map.at(peak);
   EXPECT_GT(contracted.z() - contracted.x(), at_rest.z() - at_rest.x() + 0.1) << "towards blue";
-  EXPECT_GT(sim::activation(s.organs[0].regions[0].drive, 5 / 30.0, body.model.ramp_s), 0.8);
+  EXPECT_GT(sim::activation(body.model.regions[0].drive, 5 / 30.0, body.model.ramp_s), 0.8);
 }
 
 TEST(Determinism, TeachingVisualsAreTheSameBitsAtOneAndTwoRasterizerThreads) {

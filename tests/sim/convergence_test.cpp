@@ -7,28 +7,28 @@
 
 #include "sim/model.h"
 #include "sim/shapes.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 namespace systole::sim {
 namespace {
 
-using scene::SolverMethod;
+using sim::Method;
 
 /// A heavy, soft, beating ball: slow enough that even the explicit solver runs at every
 /// step tried here, so all three can be compared on the same model.
-Model soft_ball(SolverMethod method, int substeps) {
+Model soft_ball(Method method, int substeps) {
   const auto surface = test::icosphere(0.05, 2);
   std::vector<int> region(surface.positions.size());
   for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() > 0 ? 0 : -1;
-  scene::Organ organ;
+  sim::OrganParams organ;
   organ.name = "ball";
   organ.body.mass_kg = 1.0;
   organ.body.stiffness_N_per_m = 50;
   organ.body.damping_s = 0.002;
   organ.body.volume_stiffness_Pa = 2000;
-  scene::Region top;
+  sim::RegionParams top;
   top.name = "top";
-  top.drive.waveform = scene::Waveform::kSine;
+  top.drive.waveform = sim::Waveform::kSine;
   top.drive.rate_hz = 1.0;
   top.drive.amplitude = 0.2;
   organ.regions.push_back(top);
@@ -40,7 +40,7 @@ Model soft_ball(SolverMethod method, int substeps) {
 }
 
 /// Positions at every 1/30 s over 1.5 s, stepping with substeps of `h`.
-std::vector<Eigen::Matrix3Xd> trajectory(SolverMethod method, double h) {
+std::vector<Eigen::Matrix3Xd> trajectory(Method method, double h) {
   const double frame = 1.0 / 30;
   const int substeps = static_cast<int>(std::lround(frame / h));
   const Model m = soft_ball(method, substeps);
@@ -76,14 +76,14 @@ double rms_motion(const std::vector<Eigen::Matrix3Xd>& a, const Eigen::Matrix3Xd
   return std::sqrt(sum / double(n));
 }
 
-const char* name_of(SolverMethod m) {
-  return m == SolverMethod::kXpbd ? "xpbd" : m == SolverMethod::kExplicit ? "explicit" : "implicit";
+const char* name_of(Method m) {
+  return m == Method::kXpbd ? "xpbd" : m == Method::kExplicit ? "explicit" : "implicit";
 }
 
-class Convergence : public ::testing::TestWithParam<SolverMethod> {};
+class Convergence : public ::testing::TestWithParam<Method> {};
 
 TEST_P(Convergence, ErrorShrinksWithTheStep) {
-  const SolverMethod method = GetParam();
+  const Method method = GetParam();
   const double h0 = 1.0 / 600;
   const auto reference = trajectory(method, h0 / 16);
   double previous = 1e9;
@@ -95,15 +95,15 @@ TEST_P(Convergence, ErrorShrinksWithTheStep) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, Convergence,
-                         ::testing::Values(SolverMethod::kXpbd, SolverMethod::kExplicit, SolverMethod::kImplicit),
+                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit),
                          [](const auto& info) { return std::string(name_of(info.param)); });
 
 TEST(Convergence, AllSolversApproachTheSameMotion) {
   const double h = 1.0 / 9600;
-  const auto xpbd = trajectory(SolverMethod::kXpbd, h);
-  const auto explicit_euler = trajectory(SolverMethod::kExplicit, h);
-  const auto implicit = trajectory(SolverMethod::kImplicit, h);
-  const double motion = rms_motion(explicit_euler, soft_ball(SolverMethod::kExplicit, 1).rest_positions);
+  const auto xpbd = trajectory(Method::kXpbd, h);
+  const auto explicit_euler = trajectory(Method::kExplicit, h);
+  const auto implicit = trajectory(Method::kImplicit, h);
+  const double motion = rms_motion(explicit_euler, soft_ball(Method::kExplicit, 1).rest_positions);
   ASSERT_GT(motion, 1e-3) << "the ball moves";
   EXPECT_LT(rms_error(xpbd, explicit_euler), 0.05 * motion);
   EXPECT_LT(rms_error(implicit, explicit_euler), 0.05 * motion);

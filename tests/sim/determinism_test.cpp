@@ -6,31 +6,31 @@
 
 #include "sim/model.h"
 #include "sim/shapes.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 namespace systole::sim {
 namespace {
 
-using scene::SolverMethod;
+using sim::Method;
 
-Model ball(SolverMethod method, int threads) {
+Model ball(Method method, int threads) {
   const auto surface = test::icosphere(0.05, 4);  // 2,562 particles: colours big enough to split.
   std::vector<int> region(surface.positions.size());
   for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() > 0 ? 0 : -1;
-  scene::Organ organ;
+  sim::OrganParams organ;
   organ.name = "ball";
   organ.body.bending_N_per_m = 50;
   organ.body.stiffness_N_per_m = 100;  // Soft and lightly damped, so 100 us explicit substeps are stable.
   organ.body.damping_s = 0.0005;
-  scene::Region top;
+  sim::RegionParams top;
   top.name = "top";
-  top.drive.waveform = scene::Waveform::kCardiac;
+  top.drive.waveform = sim::Waveform::kCardiac;
   top.drive.rate_hz = 1.2;
   top.drive.amplitude = 0.12;
   organ.regions.push_back(top);
   ModelOptions options;
   options.solver.method = method;
-  options.solver.substeps = method == SolverMethod::kExplicit ? 40 : method == SolverMethod::kXpbd ? 4 : 1;
+  options.solver.substeps = method == Method::kExplicit ? 40 : method == Method::kXpbd ? 4 : 1;
   options.solver.threads = threads;
   options.clip_s = 10;
   return build_model(organ, test::geometry_of(surface, region), options);
@@ -46,11 +46,11 @@ bool same_bits(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
 }
 
-const char* name_of(SolverMethod m) {
-  return m == SolverMethod::kXpbd ? "xpbd" : m == SolverMethod::kExplicit ? "explicit" : "implicit";
+const char* name_of(Method m) {
+  return m == Method::kXpbd ? "xpbd" : m == Method::kExplicit ? "explicit" : "implicit";
 }
 
-class ThreadDeterminism : public ::testing::TestWithParam<SolverMethod> {};
+class ThreadDeterminism : public ::testing::TestWithParam<Method> {};
 
 TEST_P(ThreadDeterminism, OneAndTwoThreadsGiveTheSameBits) {
   const Model one = ball(GetParam(), 1), two = ball(GetParam(), 2);
@@ -68,7 +68,7 @@ TEST_P(ThreadDeterminism, OneAndTwoThreadsGiveTheSameBits) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, ThreadDeterminism,
-                         ::testing::Values(SolverMethod::kXpbd, SolverMethod::kExplicit, SolverMethod::kImplicit),
+                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit),
                          [](const auto& info) { return std::string(name_of(info.param)); });
 
 }  // namespace

@@ -8,8 +8,8 @@
 namespace systole::sim {
 namespace {
 
-scene::Drive make(scene::Waveform w, double rate_hz) {
-  scene::Drive d;
+sim::Drive make(sim::Waveform w, double rate_hz) {
+  sim::Drive d;
   d.waveform = w;
   d.rate_hz = rate_hz;
   d.amplitude = 0.1;
@@ -17,7 +17,7 @@ scene::Drive make(scene::Waveform w, double rate_hz) {
 }
 
 TEST(Drive, SineIsPeriodicBetweenZeroAndOne) {
-  const auto d = make(scene::Waveform::kSine, 2.0);
+  const auto d = make(sim::Waveform::kSine, 2.0);
   for (double t = 0; t < 2; t += 0.013) {
     const double phi = activation(d, t, 10);
     EXPECT_GE(phi, 0.0);
@@ -29,7 +29,7 @@ TEST(Drive, SineIsPeriodicBetweenZeroAndOne) {
 }
 
 TEST(Drive, CardiacContractsOnlyDuringSystole) {
-  auto d = make(scene::Waveform::kCardiac, 1.0);
+  auto d = make(sim::Waveform::kCardiac, 1.0);
   d.systolic_fraction = 0.3;
   EXPECT_NEAR(activation(d, 0.15, 10), 1.0, 1e-12) << "peak in mid-systole";
   EXPECT_GT(activation(d, 0.05, 10), 0.0);
@@ -37,7 +37,7 @@ TEST(Drive, CardiacContractsOnlyDuringSystole) {
 }
 
 TEST(Drive, DelayShiftsTheWave) {
-  auto atria = make(scene::Waveform::kCardiac, 1.2);
+  auto atria = make(sim::Waveform::kCardiac, 1.2);
   auto ventricles = atria;
   ventricles.delay_s = 0.16;
   for (double t = 0.2; t < 2; t += 0.01) {
@@ -47,7 +47,7 @@ TEST(Drive, DelayShiftsTheWave) {
 }
 
 TEST(Drive, BreathingInhalesFasterThanItExhales) {
-  auto d = make(scene::Waveform::kBreathing, 0.25);
+  auto d = make(sim::Waveform::kBreathing, 0.25);
   d.inhale_fraction = 0.4;
   // Peak at the end of the inhale, back to rest at the end of the period.
   EXPECT_NEAR(activation(d, 0.4 * 4.0, 60), 1.0, 1e-12);
@@ -59,7 +59,7 @@ TEST(Drive, BreathingInhalesFasterThanItExhales) {
 }
 
 TEST(Drive, RateRampIntegratesToTheRightNumberOfBeats) {
-  auto d = make(scene::Waveform::kCardiac, 1.0);
+  auto d = make(sim::Waveform::kCardiac, 1.0);
   d.rate_end_hz = 2.0;
   // 1 -> 2 Hz over 10 s: mean 1.5 Hz, 15 cycles; then 2 Hz.
   EXPECT_NEAR(drive_cycles(d, 10.0, 10.0), 15.0, 1e-12);
@@ -68,7 +68,7 @@ TEST(Drive, RateRampIntegratesToTheRightNumberOfBeats) {
 }
 
 TEST(Drive, FourierHarmonicsAddUp) {
-  auto d = make(scene::Waveform::kFourier, 1.0);
+  auto d = make(sim::Waveform::kFourier, 1.0);
   d.harmonics = {{0.3, 0.0}, {0.1, std::numbers::pi / 2}};
   for (double u = 0; u < 1; u += 0.1) {
     const double expected = 0.5 + 0.3 * std::cos(2 * std::numbers::pi * u) +
@@ -79,7 +79,7 @@ TEST(Drive, FourierHarmonicsAddUp) {
 }
 
 TEST(Drive, SamplesPassThroughEverySample) {
-  auto d = make(scene::Waveform::kSamples, 1.0);
+  auto d = make(sim::Waveform::kSamples, 1.0);
   d.samples = {0.0, 0.5, 1.0, 0.25};
   for (std::size_t i = 0; i < d.samples.size(); ++i) {
     EXPECT_NEAR(waveform_value(d, double(i) / d.samples.size()), d.samples[i], 1e-12);
@@ -103,7 +103,7 @@ TEST(Drive, IrregularBeatsAreSeededAndBounded) {
 }
 
 TEST(Drive, IrregularBeatsStretchTheWaveform) {
-  auto d = make(scene::Waveform::kCardiac, 1.0);
+  auto d = make(sim::Waveform::kCardiac, 1.0);
   d.systolic_fraction = 0.3;
   const std::vector<double> beats = {0.0, 1.5, 2.0, 3.0};
   // Beat 0 lasts 1.5 s: the peak of systole comes at 0.15 * 1.5 s.

@@ -10,19 +10,19 @@
 
 #include "sim/model.h"
 #include "sim/shapes.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 namespace systole::sim {
 namespace {
 
-using scene::SolverMethod;
+using sim::Method;
 
 enum class Outcome { kStable, kDiagnosed };
 
 /// A soft ball whose upper half beats: the common body of the cases.
 struct Case {
   mesh::TriangleMesh surface = test::icosphere(0.05, 2);  // 162 vertices: stability, not resolution.
-  scene::Organ organ;
+  sim::OrganParams organ;
   ModelOptions options;
   double seconds = 3;
   double dt_s = 1.0 / 240;
@@ -34,9 +34,9 @@ struct Case {
     // Bending makes the shape unique; without it (and with no volume constraint, as on the
     // broken mesh) a membrane may switch wrinkle patterns from cycle to cycle.
     organ.body.bending_N_per_m = 20;
-    scene::Region top;
+    sim::RegionParams top;
     top.name = "top";
-    top.drive.waveform = scene::Waveform::kSine;
+    top.drive.waveform = sim::Waveform::kSine;
     top.drive.rate_hz = 1.5;
     top.drive.amplitude = 0.15;
     organ.regions.push_back(top);
@@ -51,7 +51,7 @@ struct Result {
   double max_cycle_drift = 0;     ///< Largest volume change between the same phase of successive cycles in the run's second half (after settling), / V0.
 };
 
-Result simulate(const Case& c, SolverMethod method, int substeps) {
+Result simulate(const Case& c, Method method, int substeps) {
   std::vector<int> region(c.surface.positions.size(), -1);
   for (std::size_t i = 0; i < region.size(); ++i) region[i] = c.surface.positions[i].y() > 0 ? 0 : -1;
   mesh::OrganGeometry geometry = test::geometry_of(c.surface, region);
@@ -106,7 +106,7 @@ std::vector<Expectation> expectations() {
       {"harmonic near Nyquist", [] {
          Case c;  // 5th harmonic of 20 Hz = 100 Hz against a 120 Hz Nyquist limit.
          auto& d = c.organ.regions[0].drive;
-         d.waveform = scene::Waveform::kFourier;
+         d.waveform = sim::Waveform::kFourier;
          d.rate_hz = 20;
          d.harmonics = {{0.2, 0}, {0, 0}, {0, 0}, {0, 0}, {0.2, 0}};
          return c;
@@ -151,25 +151,25 @@ std::vector<Expectation> expectations() {
   };
 }
 
-int substeps_for(SolverMethod m, const Case& c) {
+int substeps_for(Method m, const Case& c) {
   // The explicit solver gets what it would need for the base material at 1 ms, not for
   // each hard case: the cases test what happens when the scene is harder than planned.
-  if (m == SolverMethod::kExplicit) return std::max(1, static_cast<int>(std::lround(c.dt_s / 1e-3)));
-  return m == SolverMethod::kXpbd ? 4 : 1;
+  if (m == Method::kExplicit) return std::max(1, static_cast<int>(std::lround(c.dt_s / 1e-3)));
+  return m == Method::kXpbd ? 4 : 1;
 }
 
-const char* name_of(SolverMethod m) {
-  return m == SolverMethod::kXpbd ? "xpbd" : m == SolverMethod::kExplicit ? "explicit" : "implicit";
+const char* name_of(Method m) {
+  return m == Method::kXpbd ? "xpbd" : m == Method::kExplicit ? "explicit" : "implicit";
 }
 
-class HardCases : public ::testing::TestWithParam<SolverMethod> {};
+class HardCases : public ::testing::TestWithParam<Method> {};
 
 TEST_P(HardCases, EachCaseIsStableOrDiagnosedAsDocumented) {
-  const SolverMethod method = GetParam();
+  const Method method = GetParam();
   for (const auto& e : expectations()) {
     const Case c = e.make();
     const Outcome expected =
-        method == SolverMethod::kXpbd ? e.xpbd : method == SolverMethod::kExplicit ? e.explicit_euler : e.implicit;
+        method == Method::kXpbd ? e.xpbd : method == Method::kExplicit ? e.explicit_euler : e.implicit;
     const Result r = simulate(c, method, substeps_for(method, c));
     SCOPED_TRACE(e.name + " with " + name_of(method));
     if (expected == Outcome::kDiagnosed) {
@@ -184,7 +184,7 @@ TEST_P(HardCases, EachCaseIsStableOrDiagnosedAsDocumented) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, HardCases,
-                         ::testing::Values(SolverMethod::kXpbd, SolverMethod::kExplicit, SolverMethod::kImplicit),
+                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit),
                          [](const auto& info) { return std::string(name_of(info.param)); });
 
 }  // namespace

@@ -9,20 +9,20 @@
 #include <numbers>
 
 #include "sim/forces.h"
-#include "sim/implicit_euler.h"
+#include "sim/solvers/implicit_euler.h"
 #include "sim/model.h"
 #include "sim/shapes.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 namespace systole::sim {
 namespace {
 
 /// A 5 cm sphere whose upper half is one driven region, stepped by the implicit solver.
 struct Ball {
-  scene::Organ organ;
-  scene::Solver solver;
+  sim::OrganParams organ;
+  sim::SolverParams solver;
   mesh::OrganGeometry geometry;
-  std::vector<scene::Interaction> interactions;
+  std::vector<sim::InteractionParams> interactions;
 
   explicit Ball(double rate_hz = 1.5, double amplitude = 0.15, int levels = 3) {
     const auto surface = test::icosphere(0.05, levels);
@@ -30,13 +30,13 @@ struct Ball {
     for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() > 0 ? 0 : -1;
     geometry = test::geometry_of(surface, region);
     organ.name = "ball";
-    scene::Region top;
+    sim::RegionParams top;
     top.name = "top";
-    top.drive.waveform = scene::Waveform::kSine;
+    top.drive.waveform = sim::Waveform::kSine;
     top.drive.rate_hz = rate_hz;
     top.drive.amplitude = amplitude;
     organ.regions.push_back(top);
-    solver.method = scene::SolverMethod::kImplicit;
+    solver.method = sim::Method::kImplicit;
   }
   Model model() const {
     ModelOptions options;
@@ -97,7 +97,7 @@ TEST(ImplicitKernels, ShermanMorrisonSolvesTheRankOneUpdate) {
 
 TEST(Implicit, AtRestWithoutDriveNothingMoves) {
   Ball ball;
-  ball.organ.regions[0].drive.waveform = scene::Waveform::kNone;
+  ball.organ.regions[0].drive.waveform = sim::Waveform::kNone;
   const Model m = ball.model();
   const State s = run(m, 1.0 / 240, 1.0);
   EXPECT_LT((s.x - m.rest_positions).cwiseAbs().maxCoeff(), 1e-9);
@@ -105,7 +105,7 @@ TEST(Implicit, AtRestWithoutDriveNothingMoves) {
 
 TEST(Implicit, PinnedParticlesStayPut) {
   Ball ball(1.5, 0.3);
-  scene::Region pin;
+  sim::RegionParams pin;
   pin.name = "pin";
   pin.pinned = true;
   ball.organ.regions.push_back(pin);
@@ -163,9 +163,9 @@ Ball stiff_ball() {
 TEST(Implicit, StableAtAFrameStepWhereExplicitBlowsUp) {
   const double dt = 1.0 / 30;
   Ball ball = stiff_ball();
-  ball.solver.method = scene::SolverMethod::kExplicit;
+  ball.solver.method = sim::Method::kExplicit;
   const Model explicit_model = ball.model();
-  ball.solver.method = scene::SolverMethod::kImplicit;
+  ball.solver.method = sim::Method::kImplicit;
   const Model implicit_model = ball.model();
 
   State e = initial_state(explicit_model);
@@ -210,7 +210,7 @@ TEST(Implicit, ErrorShrinksWithTheStep) {
 
   // And the limit is the explicit solver's: the same forces, integrated another way.
   Ball explicit_ball = ball;
-  explicit_ball.solver.method = scene::SolverMethod::kExplicit;
+  explicit_ball.solver.method = sim::Method::kExplicit;
   const State explicit_reference = run(explicit_ball.model(), 1.0 / 7680, t);
   const double motion = (reference.x - m.rest_positions).colwise().norm().maxCoeff();
   EXPECT_LT(max_distance(explicit_reference, reference), 0.1 * e1) << "motion " << motion;
@@ -222,7 +222,7 @@ TEST(Implicit, AgreesWithXpbdAsTheStepShrinks) {
   const double t = 0.25;
   ball.solver.substeps = 1;
   const Model implicit_model = ball.model();
-  ball.solver.method = scene::SolverMethod::kXpbd;
+  ball.solver.method = sim::Method::kXpbd;
   const Model xpbd_model = ball.model();
   std::vector<double> gap;
   double motion = 0;
@@ -242,7 +242,7 @@ TEST(Implicit, StepSolvesBackwardEulerToSecondOrder) {
   // residual M (v1 - v0) - h f(x1, v1) of second order in the perturbation. A wrong or
   // missing Jacobian (the volume's rank-one term, a spring block) would leave first order.
   Ball ball(1.5, 0.0, 2);
-  ball.organ.regions[0].drive.waveform = scene::Waveform::kNone;
+  ball.organ.regions[0].drive.waveform = sim::Waveform::kNone;
   ball.organ.body.drag_per_s = 0;
   ball.organ.body.volume_stiffness_Pa = 1e6;
   ball.solver.substeps = 1;
@@ -290,10 +290,9 @@ TEST(Implicit, SameInputsGiveBitIdenticalStates) {
 
 TEST(Implicit, GrabPullsItsPatchTowardsTheHandle) {
   Ball ball;
-  ball.organ.regions[0].drive.waveform = scene::Waveform::kNone;
-  scene::Interaction grab;
-  grab.kind = scene::InteractionKind::kGrab;
-  grab.organ = "ball";
+  ball.organ.regions[0].drive.waveform = sim::Waveform::kNone;
+  sim::InteractionParams grab;
+  grab.kind = sim::InteractionKind::kGrab;
   grab.at_m = Eigen::Vector3d(0.05, 0, 0);
   grab.radius_m = 0.012;
   grab.path = {{0.0, Eigen::Vector3d(0.05, 0, 0)}, {0.5, Eigen::Vector3d(0.07, 0, 0)}};

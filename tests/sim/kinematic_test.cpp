@@ -4,37 +4,37 @@
 
 #include "sim/model.h"
 #include "sim/shapes.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 namespace systole::sim {
 namespace {
 
-using scene::SolverMethod;
+using sim::Method;
 
-const char* name_of(SolverMethod m) {
-  return m == SolverMethod::kXpbd ? "xpbd" : m == SolverMethod::kExplicit ? "explicit" : "implicit";
+const char* name_of(Method m) {
+  return m == Method::kXpbd ? "xpbd" : m == Method::kExplicit ? "explicit" : "implicit";
 }
 
-class Kinematic : public ::testing::TestWithParam<SolverMethod> {};
+class Kinematic : public ::testing::TestWithParam<Method> {};
 
 TEST_P(Kinematic, RegionFollowsItsPathAndCarriesTheBody) {
   const auto surface = test::icosphere(0.05, 2);
   std::vector<int> region(surface.positions.size());
   for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() < -0.04 ? 0 : -1;
-  scene::Organ organ;
+  sim::OrganParams organ;
   organ.name = "ball";
   organ.body.mass_kg = 1.0;  // Heavy and soft, so the explicit solver runs at 1 ms substeps.
   organ.body.stiffness_N_per_m = 50;
   organ.body.damping_s = 0.002;
   organ.body.drag_per_s = 5;
-  scene::Region base;  // The base is lowered by 2 cm over one second, then held.
+  sim::RegionParams base;  // The base is lowered by 2 cm over one second, then held.
   base.name = "base";
   base.pinned = true;
   base.motion = {{0.0, Eigen::Vector3d::Zero()}, {1.0, Eigen::Vector3d(0, -0.02, 0)}};
   organ.regions.push_back(base);
   ModelOptions options;
   options.solver.method = GetParam();
-  options.solver.substeps = GetParam() == SolverMethod::kExplicit ? 8 : GetParam() == SolverMethod::kXpbd ? 4 : 1;
+  options.solver.substeps = GetParam() == Method::kExplicit ? 8 : GetParam() == Method::kXpbd ? 4 : 1;
   options.clip_s = 10;
   const Model m = build_model(organ, test::geometry_of(surface, region), options);
   ASSERT_EQ(m.kinematic.size(), 1u);
@@ -51,7 +51,7 @@ TEST_P(Kinematic, RegionFollowsItsPathAndCarriesTheBody) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, Kinematic,
-                         ::testing::Values(SolverMethod::kXpbd, SolverMethod::kExplicit, SolverMethod::kImplicit),
+                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit),
                          [](const auto& info) { return std::string(name_of(info.param)); });
 
 }  // namespace

@@ -7,17 +7,17 @@
 
 #include "sim/model.h"
 #include "sim/shapes.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 namespace systole::sim {
 namespace {
 
-using scene::SolverMethod;
+using sim::Method;
 
 constexpr double kRadius = 0.05;
 constexpr double kPokeStart = 2.0;
 
-Model beating_ball(SolverMethod method, bool poked) {
+Model beating_ball(Method method, bool poked) {
   const auto surface = test::icosphere(kRadius, 2);
   std::vector<int> region(surface.positions.size());
   // The top half beats; a cap at the bottom is pinned, as vessels hold a heart, so a push
@@ -26,7 +26,7 @@ Model beating_ball(SolverMethod method, bool poked) {
     const double y = surface.positions[i].y();
     region[i] = y > 0 ? 0 : y < -0.8 * kRadius ? 1 : -1;
   }
-  scene::Organ organ;
+  sim::OrganParams organ;
   organ.name = "ball";
   organ.body.mass_kg = 0.5;
   organ.body.stiffness_N_per_m = 100;
@@ -37,23 +37,22 @@ Model beating_ball(SolverMethod method, bool poked) {
   // wrinkle pattern after a hard push and never quite return (measured: 2 mm for ever,
   // against 0.02 mm eight beats on with bending).
   organ.body.bending_N_per_m = 20;
-  scene::Region top;
+  sim::RegionParams top;
   top.name = "top";
-  top.drive.waveform = scene::Waveform::kCardiac;
+  top.drive.waveform = sim::Waveform::kCardiac;
   top.drive.rate_hz = 1.2;
   top.drive.amplitude = 0.12;
   organ.regions.push_back(top);
-  scene::Region base;
+  sim::RegionParams base;
   base.name = "base";
   base.pinned = true;
   organ.regions.push_back(base);
   ModelOptions options;
   options.solver.method = method;
-  options.solver.substeps = method == SolverMethod::kExplicit ? 20 : method == SolverMethod::kXpbd ? 4 : 1;
+  options.solver.substeps = method == Method::kExplicit ? 20 : method == Method::kXpbd ? 4 : 1;
   options.clip_s = 10;
   if (poked) {
-    scene::Interaction poke;  // A 0.1 s push into the side of the ball.
-    poke.organ = "ball";
+    sim::InteractionParams poke;  // A 0.1 s push into the side of the ball.
     poke.at_m = Eigen::Vector3d(kRadius, 0, 0);
     poke.radius_m = 0.012;
     poke.force_N = Eigen::Vector3d(-3, 0, 0);
@@ -64,14 +63,14 @@ Model beating_ball(SolverMethod method, bool poked) {
   return build_model(organ, test::geometry_of(surface, region), options);
 }
 
-const char* name_of(SolverMethod m) {
-  return m == SolverMethod::kXpbd ? "xpbd" : m == SolverMethod::kExplicit ? "explicit" : "implicit";
+const char* name_of(Method m) {
+  return m == Method::kXpbd ? "xpbd" : m == Method::kExplicit ? "explicit" : "implicit";
 }
 
-class Poke : public ::testing::TestWithParam<SolverMethod> {};
+class Poke : public ::testing::TestWithParam<Method> {};
 
 TEST_P(Poke, DentsSpreadsAndSettlesBackIntoTheRhythm) {
-  const SolverMethod method = GetParam();
+  const Method method = GetParam();
   const Model calm = beating_ball(method, false);
   const Model poked = beating_ball(method, true);
   ASSERT_EQ(poked.pokes.size(), 1u);
@@ -119,7 +118,7 @@ TEST_P(Poke, DentsSpreadsAndSettlesBackIntoTheRhythm) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, Poke,
-                         ::testing::Values(SolverMethod::kXpbd, SolverMethod::kExplicit, SolverMethod::kImplicit),
+                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit),
                          [](const auto& info) { return std::string(name_of(info.param)); });
 
 }  // namespace

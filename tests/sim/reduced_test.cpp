@@ -7,26 +7,26 @@
 
 #include "sim/reduced.h"
 #include "sim/shapes.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 namespace systole::sim {
 namespace {
 
 /// A ball whose upper half beats and whose bottom cap is pinned.
-scene::Organ ball_organ(int lattice, int top_detail) {
-  scene::Organ organ;
+sim::OrganParams ball_organ(int lattice, int top_detail) {
+  sim::OrganParams organ;
   organ.name = "ball";
   organ.body.mass_kg = 0.3;
   organ.body.stiffness_N_per_m = 200;
   organ.body.volume_stiffness_Pa = 3000;
   organ.body.lattice = lattice;
-  scene::Region top;
+  sim::RegionParams top;
   top.name = "top";
-  top.drive.waveform = scene::Waveform::kSine;
+  top.drive.waveform = sim::Waveform::kSine;
   top.drive.rate_hz = 1.0;
   top.drive.amplitude = 0.15;
   top.detail = top_detail;
-  scene::Region bottom;
+  sim::RegionParams bottom;
   bottom.name = "bottom";
   bottom.pinned = true;
   organ.regions = {top, bottom};

@@ -7,27 +7,27 @@
 #include "sim/forces.h"
 #include "sim/model.h"
 #include "sim/state.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 #include "shapes.h"
 
 namespace systole::sim {
 namespace {
 
-scene::Organ breathing_ball(scene::SolverMethod) {
-  scene::Organ organ;
+sim::OrganParams breathing_ball(sim::Method) {
+  sim::OrganParams organ;
   organ.name = "ball";
   organ.body.mass_kg = 0.2;
   organ.body.stiffness_N_per_m = 40;
   organ.body.damping_s = 0.005;
   organ.body.volume_stiffness_Pa = 50000;
   organ.body.drag_per_s = 5;
-  organ.body.volume_drive.waveform = scene::Waveform::kSine;
+  organ.body.volume_drive.waveform = sim::Waveform::kSine;
   organ.body.volume_drive.rate_hz = 0.5;
   organ.body.volume_drive.amplitude = 0.15;
   return organ;
 }
 
-Model build(const scene::Organ& organ, scene::SolverMethod method) {
+Model build(const sim::OrganParams& organ, sim::Method method) {
   const mesh::TriangleMesh sphere = test::icosphere(0.05, 2);
   ModelOptions options;
   options.solver.method = method;
@@ -38,7 +38,7 @@ Model build(const scene::Organ& organ, scene::SolverMethod method) {
 }
 
 TEST(VolumeDrive, RestVolumeFollowsTheDrive) {
-  const Model m = build(breathing_ball(scene::SolverMethod::kXpbd), scene::SolverMethod::kXpbd);
+  const Model m = build(breathing_ball(sim::Method::kXpbd), sim::Method::kXpbd);
   ASSERT_TRUE(m.volume.enabled);
   EXPECT_DOUBLE_EQ(driven_rest_volume(m, 0.0), m.volume.rest_m3);
   EXPECT_NEAR(driven_rest_volume(m, 1.0), 1.15 * m.volume.rest_m3, 1e-12 * m.volume.rest_m3);  // Peak: half a period.
@@ -46,18 +46,18 @@ TEST(VolumeDrive, RestVolumeFollowsTheDrive) {
 }
 
 TEST(VolumeDrive, UndrivenRestVolumeIsConstant) {
-  scene::Organ organ = breathing_ball(scene::SolverMethod::kXpbd);
-  organ.body.volume_drive = scene::Drive{};
-  const Model m = build(organ, scene::SolverMethod::kXpbd);
+  sim::OrganParams organ = breathing_ball(sim::Method::kXpbd);
+  organ.body.volume_drive = sim::Drive{};
+  const Model m = build(organ, sim::Method::kXpbd);
   EXPECT_EQ(driven_rest_volume(m, 0.7), m.volume.rest_m3);
 }
 
 // The body follows: near the drive's peak its volume is well above V0, and a period later
 // back near V0. Both solvers that read the helper.
-class VolumeDriveSolver : public ::testing::TestWithParam<scene::SolverMethod> {};
+class VolumeDriveSolver : public ::testing::TestWithParam<sim::Method> {};
 
 TEST_P(VolumeDriveSolver, BodyInflatesAndDeflates) {
-  const scene::Organ organ = breathing_ball(GetParam());
+  const sim::OrganParams organ = breathing_ball(GetParam());
   const Model m = build(organ, GetParam());
   State s = initial_state(m);
   const double dt = 1.0 / 240.0;
@@ -74,13 +74,13 @@ TEST_P(VolumeDriveSolver, BodyInflatesAndDeflates) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, VolumeDriveSolver,
-                         ::testing::Values(scene::SolverMethod::kXpbd, scene::SolverMethod::kExplicit));
+                         ::testing::Values(sim::Method::kXpbd, sim::Method::kExplicit));
 
 TEST(VolumeDrive, NeedsTheVolumeConstraint) {
-  scene::Organ organ = breathing_ball(scene::SolverMethod::kXpbd);
+  sim::OrganParams organ = breathing_ball(sim::Method::kXpbd);
   organ.body.volume_stiffness_Pa = 0;
   try {
-    build(organ, scene::SolverMethod::kXpbd);
+    build(organ, sim::Method::kXpbd);
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::kDataError);

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "sim/model.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 #include "sim/shapes.h"
 
 namespace systole::sim {
@@ -14,8 +14,8 @@ namespace {
 
 /// A 5 cm sphere whose upper half is one driven region.
 struct Ball {
-  scene::Organ organ;
-  scene::Solver solver;
+  sim::OrganParams organ;
+  sim::SolverParams solver;
   mesh::OrganGeometry geometry;
 
   explicit Ball(double rate_hz = 1.5, double amplitude = 0.15) {
@@ -24,9 +24,9 @@ struct Ball {
     for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() > 0 ? 0 : -1;
     geometry = test::geometry_of(surface, region);
     organ.name = "ball";
-    scene::Region top;
+    sim::RegionParams top;
     top.name = "top";
-    top.drive.waveform = scene::Waveform::kSine;
+    top.drive.waveform = sim::Waveform::kSine;
     top.drive.rate_hz = rate_hz;
     top.drive.amplitude = amplitude;
     organ.regions.push_back(top);
@@ -64,7 +64,7 @@ TEST(Xpbd, SpringsAreColouredSoNoTwoOfAColourShareAParticle) {
 
 TEST(Xpbd, AtRestWithoutDriveNothingMoves) {
   Ball ball;
-  ball.organ.regions[0].drive.waveform = scene::Waveform::kNone;
+  ball.organ.regions[0].drive.waveform = sim::Waveform::kNone;
   const Model m = ball.model();
   State s = initial_state(m);
   for (int i = 0; i < 240; ++i) step(m, s, 1.0 / 240);
@@ -118,7 +118,7 @@ TEST(Xpbd, DrivePeriodShowsInTheVolume) {
 
 TEST(Xpbd, PinnedParticlesStayPut) {
   Ball ball(1.5, 0.3);
-  scene::Region pin;
+  sim::RegionParams pin;
   pin.name = "pin";
   pin.pinned = true;
   ball.organ.regions.push_back(pin);

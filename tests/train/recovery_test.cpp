@@ -8,7 +8,7 @@
 
 #include "world/world.h"
 #include "scene/load.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 #include "train/fourier.h"
 #include "train/train_test_util.h"
 #include "train/tune.h"

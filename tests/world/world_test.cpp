@@ -16,7 +16,7 @@
 #include "world/world.h"
 #include "scene/load.h"
 #include "sim/model.h"
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 
@@ -167,7 +167,7 @@ TEST(Scenes, InfarctBarelyMovesWhileItsNeighboursDo) {
   ASSERT_FALSE(scar.empty());
   for (int i = 0; i < m.particle_count(); ++i) {
     const int r = m.vertex_region[static_cast<size_t>(i)];
-    if (r == infarct || r < 0 || m.regions[static_cast<size_t>(r)].drive.waveform == scene::Waveform::kNone) continue;
+    if (r == infarct || r < 0 || m.regions[static_cast<size_t>(r)].drive.waveform == sim::Waveform::kNone) continue;
     for (int j : scar) {
       if ((m.rest_positions.col(i) - m.rest_positions.col(j)).norm() < 0.02) {
         ring.push_back(i);

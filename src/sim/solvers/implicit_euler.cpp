@@ -1,4 +1,4 @@
-#include "sim/implicit_euler.h"
+#include "sim/solvers/implicit_euler.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -7,7 +7,9 @@
 
 #include "sim/drive.h"
 #include "sim/forces.h"
+#include "sim/constraints/volume.h"
 #include "sim/interactions.h"
+#include "sim/solvers/substep.h"
 
 namespace systole::sim {
 
@@ -189,13 +191,9 @@ void assemble(const Model& model, State& s, ImplicitCache& c, double h, double t
       add_block(values, &c.ba_slot[3 * j], -block);
     }
   }
-  for (const Poke& p : model.pokes) {
-    const double factor = poke_factor(p, t_start, model.ramp_s);
-    if (factor == 0) continue;
-    for (int i : p.particles) {
-      if (w[i] != 0) rhs.col(i) += h * factor * p.force_per_particle_N;
-    }
-  }
+  for_each_poke(model, t_start, [&](int i, double factor, const Eigen::Vector3d& force_N) {
+    if (w[i] != 0) rhs.col(i) += h * factor * force_N;
+  });
   // Grabs: zero-length springs f = k (target - x) to the handle at the substep's end, so
   // df/dx = -k I on the diagonal.
   for (const Grab& g : model.grabs) {
@@ -220,22 +218,13 @@ void assemble(const Model& model, State& s, ImplicitCache& c, double h, double t
 void add_volume(const Model& model, State& s, ImplicitCache& c, double h, double t_end) {
   const VolumeConstraint& vol = model.volume;
   Eigen::Matrix3Xd& g = s.volume_gradient;
-  g.setZero();
-  double six_v = 0;
-  for (const auto& t : vol.triangles) {
-    const auto p0 = s.x.col(t[0]), p1 = s.x.col(t[1]), p2 = s.x.col(t[2]);
-    six_v += p0.dot(p1.cross(p2));
-    g.col(t[0]) += p1.cross(p2);
-    g.col(t[1]) += p2.cross(p0);
-    g.col(t[2]) += p0.cross(p1);
-  }
-  g /= 6.0;
+  const double volume = volume_and_gradient(s.x, vol.triangles, g);
   const int n = model.particle_count();
   for (int i = 0; i < n; ++i) {
     if (model.inverse_mass[i] == 0) g.col(i).setZero();
   }
   const double k_v = 1.0 / vol.compliance_m5_per_N;
-  const double pressure = -k_v * (six_v / 6.0 - driven_rest_volume(model, t_end));  // unit: N/m^2
+  const double pressure = -k_v * (volume - driven_rest_volume(model, t_end));  // unit: N/m^2
   double g_dot_v = 0;                                          // dV/dt. unit: m^3/s
   for (int i = 0; i < n; ++i) g_dot_v += g.col(i).dot(s.v.col(i));
   Eigen::Map<Eigen::Matrix3Xd> rhs(c.rhs.data(), 3, n);
@@ -264,7 +253,7 @@ void implicit_step(const Model& model, State& s, double dt_s) {
   for (int sub = 0; sub < substeps; ++sub) {
     const double t_end = s.time_s + h;
     // Backward Euler evaluates the rest lengths where it evaluates the forces: at t + h.
-    region_contractions(model.regions, model.beat_boundaries, t_end, model.ramp_s, s.region_contraction);
+    update_contractions(model, s, t_end);
     assemble(model, s, c, h, s.time_s, t_end);
     if (model.volume.enabled) add_volume(model, s, c, h, t_end);
     c.cg.compute(c.matrix);  // Only reads the diagonal for the preconditioner.
@@ -279,13 +268,8 @@ void implicit_step(const Model& model, State& s, double dt_s) {
       if (model.inverse_mass[i] == 0) continue;
       s.v.col(i) = drag * (s.v.col(i) + dv.col(i));
     }
-    s.x_prev = s.x;
-    s.x += h * s.v;
-    move_kinematic_regions(model, t_end, s.x);
-    if (model.floor.enabled) {
-      resolve_floor_contact(model, s.x);
-      s.v = (s.x - s.x_prev) / h;  // The contact removed the motion into the floor.
-    }
+    drift(model, s, h, t_end);
+    settle_on_floor(model, s, h);
     s.time_s = t_end;
   }
 }

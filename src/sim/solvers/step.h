@@ -9,9 +9,9 @@
 
 namespace systole::sim {
 
-/// Advances the body by dt_s with the model's solver. Throws Error(kDataError) for a
-/// solver this build does not provide.
-void step(const Model& model, State& state, double dt_s);
+/// Advances the body by dt_s with the model's solver. `coupling`, when given, ties the
+/// particles to moving targets (training; XPBD only: Error(kInternal) otherwise).
+void step(const Model& model, State& state, double dt_s, const Attachments* coupling = nullptr);
 
 /// What is wrong with a state, if anything: non-finite values, an extent far beyond the
 /// rest shape's, or a collapsed volume. The text names the cause and the particle.

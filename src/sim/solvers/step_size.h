@@ -36,6 +36,11 @@ double max_omega_squared(const Model& model);
 double estimated_cost_s_per_s(const Model& model, double dt_s);
 
 /// Highest drive frequency of any region. unit: Hz
-double highest_drive_frequency_hz(const Model& model);
+double highest_drive_frequency_hz(const std::vector<RegionParams>& regions);
+
+/// Longest step that samples the regions' fastest drive component finely enough (20 steps
+/// a period; 1 s when nothing is driven): step_limits' max_step_s, known before a body is
+/// built, so a world can choose its step first. unit: s
+double max_step_s(const std::vector<RegionParams>& regions);
 
 }  // namespace systole::sim

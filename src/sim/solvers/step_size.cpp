@@ -1,4 +1,4 @@
-#include "sim/step_size.h"
+#include "sim/solvers/step_size.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +19,7 @@ double max_contraction_rate_per_s(const Model& m) {
   double fastest = 0;
   for (const auto& r : m.regions) {
     const auto& d = r.drive;
-    if (d.waveform == scene::Waveform::kNone || d.amplitude == 0) continue;
+    if (d.waveform == Waveform::kNone || d.amplitude == 0) continue;
     const double rate = std::max(d.rate_hz, d.rate_end_hz);
     const int samples = 2048;
     for (int i = 0; i < samples; ++i) {
@@ -33,10 +33,15 @@ double max_contraction_rate_per_s(const Model& m) {
 
 }  // namespace
 
-double highest_drive_frequency_hz(const Model& m) {
+double highest_drive_frequency_hz(const std::vector<RegionParams>& regions) {
   double f = 0;
-  for (const auto& r : m.regions) f = std::max(f, highest_frequency_hz(r.drive));
+  for (const auto& r : regions) f = std::max(f, highest_frequency_hz(r.drive));
   return f;
+}
+
+double max_step_s(const std::vector<RegionParams>& regions) {
+  const double f = highest_drive_frequency_hz(regions);
+  return f > 0 ? 1.0 / (kStepsPerPeriod * f) : 1.0;
 }
 
 double max_omega_squared(const Model& m) {
@@ -57,18 +62,18 @@ double max_omega_squared(const Model& m) {
 
 StepLimits step_limits(const Model& m) {
   StepLimits limits;
-  const double f = highest_drive_frequency_hz(m);
-  limits.max_step_s = f > 0 ? 1.0 / (kStepsPerPeriod * f) : 1.0;
+  const double f = highest_drive_frequency_hz(m.regions);
+  limits.max_step_s = max_step_s(m.regions);
   char text[256];
   std::snprintf(text, sizeof text, "drive up to %.3g Hz needs steps <= %.3g ms", f, 1e3 * limits.max_step_s);
   limits.reason = text;
 
   switch (m.method) {
-    case scene::SolverMethod::kImplicit:
+    case Method::kImplicit:
       limits.max_substep_s = limits.max_step_s;
       limits.reason += "; implicit Euler is stable at any step";
       break;
-    case scene::SolverMethod::kExplicit: {
+    case Method::kExplicit: {
       const double omega2 = max_omega_squared(m);
       double tau = 0;
       for (double d : m.springs.damping_s) tau = std::max(tau, d);
@@ -80,7 +85,7 @@ StepLimits step_limits(const Model& m) {
       limits.reason += text;
       break;
     }
-    case scene::SolverMethod::kXpbd: {
+    case Method::kXpbd: {
       // XPBD is stable at any substep; its error grows with how far the constraints'
       // targets move within one substep, so the drive's fastest rest-length change sets it.
       const double rate = max_contraction_rate_per_s(m) / kMaxContractionPerSubstep;
@@ -97,9 +102,9 @@ StepLimits step_limits(const Model& m) {
 double estimated_cost_s_per_s(const Model& model, double dt_s) {
   const double work = model.springs.size() + (model.volume.enabled ? double(model.volume.triangles.size()) : 0.0);
   switch (model.method) {
-    case scene::SolverMethod::kXpbd: return work * model.substeps / dt_s / 74e6;
-    case scene::SolverMethod::kExplicit: return work * model.substeps / dt_s / 95e6;
-    case scene::SolverMethod::kImplicit: return work / dt_s / 0.2e6;
+    case Method::kXpbd: return work * model.substeps / dt_s / 74e6;
+    case Method::kExplicit: return work * model.substeps / dt_s / 95e6;
+    case Method::kImplicit: return work / dt_s / 0.2e6;
   }
   return 0;
 }

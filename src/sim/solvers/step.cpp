@@ -1,31 +1,31 @@
-#include "sim/step.h"
+#include "sim/solvers/step.h"
 
 #include <cmath>
 #include <sstream>
 
 #include "common/error.h"
-#include "sim/explicit_euler.h"
-#include "sim/implicit_euler.h"
-#include "sim/xpbd.h"
+#include "sim/solvers/explicit_euler.h"
+#include "sim/solvers/implicit_euler.h"
+#include "sim/solvers/xpbd.h"
 
 namespace systole::sim {
 
-void step(const Model& model, State& state, double dt_s) {
-  if (model.attachments.enabled() && model.method != scene::SolverMethod::kXpbd) {
+void step(const Model& model, State& state, double dt_s, const Attachments* coupling) {
+  if (coupling && coupling->enabled() && model.method != Method::kXpbd) {
     throw Error(ExitCode::kInternal, "attachments (training's coupling) are solved by XPBD only");
   }
   switch (model.method) {
-    case scene::SolverMethod::kXpbd:
-      xpbd_step(model, state, dt_s);
+    case Method::kXpbd:
+      xpbd_step(model, state, dt_s, coupling);
       return;
-    case scene::SolverMethod::kExplicit:
+    case Method::kExplicit:
       explicit_step(model, state, dt_s);
       return;
-    case scene::SolverMethod::kImplicit:
+    case Method::kImplicit:
       implicit_step(model, state, dt_s);
       return;
   }
-  throw Error(ExitCode::kDataError, "solver.method: only 'xpbd' is available in this build");
+  throw Error(ExitCode::kInternal, "sim::step: unknown solver method");
 }
 
 std::optional<std::string> diagnose(const Model& model, const State& s) {
@@ -68,11 +68,11 @@ std::optional<std::string> diagnose(const Model& model, const State& s) {
 
 std::string divergence_remedy(const Model& model) {
   switch (model.method) {
-    case scene::SolverMethod::kXpbd:
+    case Method::kXpbd:
       return "raise solver.substeps or lower solver.dt, or lower body.stiffness / region stiffness ratios";
-    case scene::SolverMethod::kExplicit:
+    case Method::kExplicit:
       return "lower solver.dt (explicit springs need dt < 2 / sqrt(k / m)), or use solver.method: xpbd";
-    case scene::SolverMethod::kImplicit:
+    case Method::kImplicit:
       return "lower solver.dt, or lower the drive amplitude";
   }
   return "lower solver.dt";

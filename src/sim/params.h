@@ -1,0 +1,126 @@
+#pragma once
+// What the simulator is built from: plain parameter structs in SI units, with no YAML and
+// no scene in sight. sim/from_scene.h translates a validated scene into them; it is the one
+// place the simulator meets the scene, so a change to captions or cameras never recompiles
+// the solvers (docs/architecture.md).
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace systole::sim {
+
+enum class Method { kXpbd, kExplicit, kImplicit };
+
+/// The periodic activation phi(t) that shortens a region's springs,
+/// L(t) = L0 (1 - amplitude phi(t - delay)); sim/drive.h evaluates it.
+enum class Waveform {
+  kNone,       ///< No drive: the region is passive.
+  kSine,       ///< phi = (1 - cos(2 pi f t + phase)) / 2.
+  kFourier,    ///< phi = 1/2 + sum_k a_k cos(2 pi k f t + phase_k), harmonics from k = 1.
+  kCardiac,    ///< Raised-cosine contraction over the systolic fraction of each beat.
+  kBreathing,  ///< Asymmetric: raised-cosine inhale over inhale_fraction, slower exhale.
+  kSamples,    ///< A table of phi over one period, interpolated periodically.
+};
+
+struct Harmonic {
+  double amplitude = 0;  ///< Relative to the drive amplitude. unit: 1
+  double phase_rad = 0;  ///< unit: rad
+};
+
+struct Drive {
+  Waveform waveform = Waveform::kNone;
+  double rate_hz = 0;               ///< Cycles per second at the start of the clip. unit: Hz
+  double rate_end_hz = 0;           ///< When > 0, the rate ramps linearly to this by the clip's end. unit: Hz
+  double amplitude = 0;             ///< Fraction of rest length removed at phi = 1. unit: 1
+  double phase_rad = 0;             ///< unit: rad
+  double delay_s = 0;               ///< Activation delay. unit: s
+  std::vector<Harmonic> harmonics;  ///< kFourier: harmonic k = index + 1.
+  double systolic_fraction = 0.35;  ///< kCardiac: part of the period spent contracting. unit: 1
+  double inhale_fraction = 0.4;     ///< kBreathing: part of the period spent inhaling. unit: 1
+  std::vector<double> samples;      ///< kSamples: phi over one period, evenly spaced.
+  double irregularity = 0;          ///< Seeded beat-to-beat jitter of the period (0 = regular). unit: 1
+};
+
+/// A position at a time, interpolated by a Catmull-Rom curve between keys (common/spline.h).
+struct PathKey {
+  double time_s = 0;                                     ///< unit: s
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< unit: m
+};
+
+/// A region's own rhythm and material.
+struct RegionParams {
+  std::string name;
+  Drive drive;
+  double stiffness_scale = 1;  ///< Multiplies the body's stiffness. unit: 1
+  double damping_scale = 1;    ///< Multiplies the body's damping. unit: 1
+  bool pinned = false;         ///< Fixed in place (inverse mass 0).
+  int detail = 1;              ///< Reduced model only: the region's voxels split into detail^3.
+  std::vector<PathKey> motion;  ///< Pinned regions: offsets from rest over time; empty: at rest.
+};
+
+/// The material of the whole body.
+struct BodyParams {
+  double mass_kg = 0.3;              ///< Total mass, spread over the particles. unit: kg
+  double stiffness_N_per_m = 400;    ///< Stiffness of each surface-edge spring. unit: N/m
+  double damping_s = 0.01;           ///< Stiffness-proportional damping time (c = k * damping_s). unit: s
+  double volume_stiffness_Pa = 20000;  ///< Bulk modulus of the enclosed volume; 0 = none. unit: Pa
+  double drag_per_s = 1.0;           ///< Velocity damping towards rest. unit: 1/s
+  double bending_N_per_m = 0;        ///< Stiffness of the springs across each edge (0: none). unit: N/m
+  int lattice = 0;                   ///< Reduced model: voxels along the longest side (0: full model).
+  Drive volume_drive;                ///< Drives the rest volume V0(t) = V0 (1 + a phi(t - delay)).
+};
+
+/// One organ as the simulator sees it.
+struct OrganParams {
+  std::string name;
+  std::string where;  ///< "file:line:column: " of the organ in its scene, for messages; may be empty.
+  BodyParams body;
+  std::vector<RegionParams> regions;
+};
+
+enum class InteractionKind { kPoke, kGrab };
+
+/// A scripted push or grab of the particles near a point.
+struct InteractionParams {
+  InteractionKind kind = InteractionKind::kPoke;
+  std::string where;                                  ///< "file:line:column" of the entry, for messages.
+  Eigen::Vector3d at_m = Eigen::Vector3d::Zero();     ///< Centre of the touched patch at rest. unit: m
+  double radius_m = 0.01;                             ///< Particles within it are touched. unit: m
+  Eigen::Vector3d force_N = Eigen::Vector3d::Zero();  ///< kPoke: total force on the patch. unit: N
+  double start_s = 0;                                 ///< kPoke. unit: s
+  double duration_s = 0.1;                            ///< kPoke. unit: s
+  Drive drive;                                        ///< kPoke: periodic when set.
+  std::vector<PathKey> path;                          ///< kGrab: the handle's path.
+  double stiffness_N_per_m = 2000;                    ///< kGrab: per particle. unit: N/m
+};
+
+/// A plane the body cannot pass.
+struct Floor {
+  bool enabled = false;
+  Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  ///< unit: m
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< Points to the free side (normalised). unit: 1
+};
+
+/// The solver settings.
+struct SolverParams {
+  Method method = Method::kXpbd;
+  int substeps = 4;  ///< XPBD and explicit substeps per step (ignored when auto_substeps).
+  int threads = 1;   ///< Threads for the spring loops; the result is the same at any count.
+  /// Choose the substeps from the body's stiffness and the step (solver.dt: auto).
+  bool auto_substeps = false;
+};
+
+/// What a model is built with besides the organ: the solver, the world and the timeline.
+struct ModelOptions {
+  SolverParams solver;
+  double dt_s = 1.0 / 240.0;  ///< The step the solver will be called with. unit: s
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< unit: m/s^2
+  double clip_s = 0;          ///< The clip's length: rate ramps span it. unit: s
+  std::uint64_t seed = 1;     ///< Irregular rhythms are seeded.
+  std::vector<InteractionParams> interactions;  ///< Those touching this organ.
+  Floor floor;
+};
+
+}  // namespace systole::sim
