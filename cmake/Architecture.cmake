@@ -10,16 +10,15 @@ set(SYSTOLE_MODULES
   "mesh:common,scene"
   "sim:common,mesh"
   "world:common,scene,mesh,sim"
-  "chart:common"
-  "text:common,chart"
+  "train:common,scene,mesh,sim,world"
+  "plot:common"
   "render:common,scene,mesh"
   "encode:common"
-  "overlay:common,scene,chart,text,render"
-  "train:common,scene,mesh,sim,world,chart"
-  "clip:common,scene,mesh,sim,world,chart,text,render,encode,overlay"
-  "study:common,scene,mesh,sim,world,chart,text,render,encode,overlay,clip"
-  "batch:common,scene,mesh,sim,world,chart,text,render,encode,overlay,clip"
-  "cli:common,scene,mesh,sim,world,chart,text,render,encode,overlay,train,clip,study,batch")
+  "overlay:common,scene,plot"
+  "clip:common,scene,mesh,sim,world,plot,render,encode,overlay"
+  "batch:common,scene,mesh,sim,world,plot,render,encode,overlay,clip"
+  "study:common,scene,mesh,sim,world,plot,render,encode,overlay,clip"
+  "cli:common,scene,mesh,sim,world,train,plot,render,encode,overlay,clip,batch,study")
 
 # The one place the simulator meets the scene: the translation of a scene into sim's own
 # parameter structs. No other file under src/sim/ may include scene/.
@@ -30,7 +29,7 @@ set(SYSTOLE_SIM_SCENE_BRIDGE "sim/from_scene.h" "sim/from_scene.cpp")
 set(SYSTOLE_EXTERNAL
   "PkgConfig::OSMESA:render"
   "PkgConfig::LIBAV:encode"
-  "Freetype::Freetype:text"
+  "Freetype::Freetype:plot"
   "yaml-cpp:scene"
   "assimp::assimp:mesh")
 
@@ -52,6 +51,23 @@ function(systole_allowed_modules module out_allowed out_known)
       return()
     endif()
   endforeach()
+endfunction()
+
+# The modules `module` may use, and those they may use, and so on: what its library may reach
+# (sim may not include scene outside its bridge, but reaches it through mesh).
+function(systole_allowed_closure module out)
+  set(closure "")
+  systole_allowed_modules(${module} queue known)
+  while(queue)
+    list(POP_FRONT queue current)
+    if(current IN_LIST closure)
+      continue()
+    endif()
+    list(APPEND closure ${current})
+    systole_allowed_modules(${current} more known)
+    list(APPEND queue ${more})
+  endwhile()
+  set(${out} "${closure}" PARENT_SCOPE)
 endfunction()
 
 # Every systole_<module> library reachable from `target` through its link libraries.
@@ -86,7 +102,7 @@ function(systole_check_links)
     if(NOT TARGET systole_${module})
       continue()
     endif()
-    systole_allowed_modules(${module} allowed known)
+    systole_allowed_closure(${module} allowed)
     systole_link_closure(systole_${module} reached)
     foreach(library IN LISTS reached)
       string(REGEX REPLACE "^systole_" "" used "${library}")

@@ -8,7 +8,6 @@
 #include "common/atomic_output.h"
 #include "common/error.h"
 #include "common/hash.h"
-#include "batch/manifest.h"
 
 namespace systole::clip {
 namespace fs = std::filesystem;

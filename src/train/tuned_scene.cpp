@@ -1,120 +1,26 @@
 #include "train/tuned_scene.h"
 
-#include <yaml-cpp/yaml.h>
-
-#include <fstream>
 #include <sstream>
 
-#include "common/error.h"
+#include "scene/write.h"
 
 namespace systole::train {
 
-namespace {
-
-/// A quantity as the scene format writes it: "1.2 Hz", "0.16 s". Full precision, so the
-/// written scene plays exactly what was tuned.
-std::string quantity(double value, const char* unit) {
-  std::ostringstream s;
-  s.precision(10);
-  s << value << " " << unit;
-  return s.str();
-}
-
-std::string plain(double value) {
-  std::ostringstream s;
-  s.precision(10);
-  s << value;
-  return s.str();
-}
-
-YAML::Node drive_node(const scene::Drive& d) {
-  YAML::Node n(YAML::NodeType::Map);
-  n.SetStyle(YAML::EmitterStyle::Flow);
-  const char* waveforms[] = {"none", "sine", "fourier", "cardiac", "breathing", "samples"};
-  n["waveform"] = waveforms[static_cast<int>(d.waveform)];
-  if (d.waveform == scene::Waveform::kNone) return n;
-  n["rate"] = quantity(d.rate_hz, "Hz");
-  n["amplitude"] = plain(d.amplitude);
-  if (d.phase_rad != 0) n["phase"] = quantity(d.phase_rad, "rad");
-  if (d.delay_s != 0) n["delay"] = quantity(d.delay_s, "s");
-  if (d.waveform == scene::Waveform::kCardiac) n["systolic_fraction"] = plain(d.systolic_fraction);
-  if (d.waveform == scene::Waveform::kBreathing) n["inhale_fraction"] = plain(d.inhale_fraction);
-  if (d.waveform == scene::Waveform::kFourier) {
-    YAML::Node list(YAML::NodeType::Sequence);
-    for (const auto& h : d.harmonics) {
-      YAML::Node item(YAML::NodeType::Map);
-      item.SetStyle(YAML::EmitterStyle::Flow);
-      item["amplitude"] = plain(h.amplitude);
-      item["phase"] = quantity(h.phase_rad, "rad");
-      list.push_back(item);
-    }
-    n["harmonics"] = list;
-  }
-  if (d.waveform == scene::Waveform::kSamples) {
-    YAML::Node list(YAML::NodeType::Sequence);
-    list.SetStyle(YAML::EmitterStyle::Flow);
-    for (double s : d.samples) list.push_back(plain(s));
-    n["samples"] = list;
-  }
-  if (d.irregularity != 0) n["irregularity"] = plain(d.irregularity);
-  return n;
-}
-
-/// A path the scene wrote relative to its own folder, made relative to the output's folder.
-void rebase(YAML::Node node, const std::filesystem::path& from_dir, const std::filesystem::path& to_dir) {
-  if (!node || !node.IsScalar()) return;
-  const std::filesystem::path p = node.as<std::string>();
-  if (p.is_absolute()) return;
-  node = std::filesystem::absolute(from_dir / p).lexically_normal().lexically_relative(std::filesystem::absolute(to_dir)).string();
-}
-
-std::string leading_comments(const std::string& path) {
-  std::ifstream in(path);
-  std::string line, out;
-  while (std::getline(in, line) && line.rfind('#', 0) == 0) out += line + "\n";
-  return out;
-}
-
-}  // namespace
-
 std::string tuned_scene_yaml(const scene::Scene& scene, const std::vector<OrganTuning>& tunings,
                              const std::filesystem::path& output) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(scene.path);
-  } catch (const YAML::Exception& e) {
-    throw Error(ExitCode::kNoInput, scene.path + ": cannot read the scene again to write the tuned one: " + e.what());
-  }
-  const std::filesystem::path from_dir = std::filesystem::path(scene.path).parent_path();
-  const std::filesystem::path to_dir = output.parent_path().empty() ? std::filesystem::path(".") : output.parent_path();
+  std::vector<scene::OrganRegions> changes;
   std::ostringstream note;
-  for (YAML::Node organ : root["organs"]) {
-    rebase(organ["mesh"]["file"], from_dir, to_dir);
-    if (organ["target"] && organ["target"]["frames"]) {
-      for (YAML::Node frame : organ["target"]["frames"]) rebase(frame["file"], from_dir, to_dir);
-    }
-    const std::string name = organ["name"].as<std::string>();
+  note.precision(3);
+  for (const scene::Organ& organ : scene.organs) {
     for (const OrganTuning& tuning : tunings) {
-      if (tuning.organ != name) continue;
-      for (YAML::Node region : organ["regions"]) {
-        const std::string region_name = region["name"].as<std::string>();
-        for (std::size_t r = 0; r < tuning.regions.size(); ++r) {
-          if (tuning.regions[r].name != region_name || tuning.regions[r].pinned) continue;
-          const scene::Region& tuned = tuning.regions[r];
-          if (tuned.drive.waveform != scene::Waveform::kNone || region["drive"]) region["drive"] = drive_node(tuned.drive);
-          if (tuned.stiffness_scale != 1 || region["stiffness"]) region["stiffness"] = plain(tuned.stiffness_scale);
-        }
-      }
-      note.precision(3);
-      note << "# systole tune: organ '" << name << "' RMS error " << tuning.before.rms_percent << " % (fitted) -> "
-           << tuning.after.rms_percent << " % (tuned) of its size, " << tuning.generations << " generations.\n";
+      if (tuning.organ != organ.name) continue;
+      changes.push_back({tuning.organ, tuning.regions});
+      note << "# systole tune: organ '" << tuning.organ << "' RMS error " << tuning.before.rms_percent
+           << " % (fitted) -> " << tuning.after.rms_percent << " % (tuned) of its size, " << tuning.generations
+           << " generations.\n";
     }
   }
-  YAML::Emitter out;
-  out.SetIndent(2);
-  out << root;
-  if (!out.good()) throw Error(ExitCode::kInternal, std::string("writing the tuned scene: ") + out.GetLastError());
-  return leading_comments(scene.path) + note.str() + out.c_str() + "\n";
+  return scene::scene_yaml_with_regions(scene, changes, output, note.str());
 }
 
 }  // namespace systole::train
