@@ -106,7 +106,7 @@ Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen
   return mass;
 }
 
-Model build_model(const OrganParams& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options) {
+BodyParts surface_body(const OrganParams& organ, const mesh::OrganGeometry& geometry) {
   const auto& surface = geometry.mesh.surface;
   BodyParts parts;
   const int n = static_cast<int>(surface.positions.size());
@@ -127,7 +127,11 @@ Model build_model(const OrganParams& organ, const mesh::OrganGeometry& geometry,
   }
   // "Enclosed volume" means nothing on an open surface.
   if (geometry.report.encloses_volume()) parts.volume_triangles = surface.triangles;
-  return build_model(organ, std::move(parts), options);
+  return parts;
+}
+
+Model build_model(const OrganParams& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options) {
+  return build_model(organ, surface_body(organ, geometry), options);
 }
 
 Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions& options) {

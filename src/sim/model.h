@@ -125,6 +125,11 @@ struct BodyParts {
 Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles,
                               double total_mass_kg);
 
+/// The parts of the full model: every surface vertex a particle with its area's share of
+/// the mass, springs on every edge (and across every interior edge when the body bends),
+/// the surface as the volume constraint's when it encloses a volume.
+BodyParts surface_body(const OrganParams& organ, const mesh::OrganGeometry& geometry);
+
 /// The body of one organ from given parts (what build_model does after taking the parts
 /// from the surface). Same errors as build_model.
 Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions& options);

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "sim/model.h"
-#include "sim/shapes.h"
+#include "support/beating_ball.h"
 #include "sim/solvers/step.h"
 
 namespace systole::sim {
@@ -17,26 +17,14 @@ using sim::Method;
 /// A heavy, soft, beating ball: slow enough that even the explicit solver runs at every
 /// step tried here, so all three can be compared on the same model.
 Model soft_ball(Method method, int substeps) {
-  const auto surface = test::icosphere(0.05, 2);
-  std::vector<int> region(surface.positions.size());
-  for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() > 0 ? 0 : -1;
-  sim::OrganParams organ;
-  organ.name = "ball";
-  organ.body.mass_kg = 1.0;
-  organ.body.stiffness_N_per_m = 50;
-  organ.body.damping_s = 0.002;
-  organ.body.volume_stiffness_Pa = 2000;
-  sim::RegionParams top;
-  top.name = "top";
-  top.drive.waveform = sim::Waveform::kSine;
-  top.drive.rate_hz = 1.0;
-  top.drive.amplitude = 0.2;
-  organ.regions.push_back(top);
-  ModelOptions options;
-  options.solver.method = method;
-  options.solver.substeps = substeps;
-  options.clip_s = 10;
-  return build_model(organ, test::geometry_of(surface, region), options);
+  test::BeatingBall ball(2, 1.0, 0.2);
+  ball.organ.body.mass_kg = 1.0;
+  ball.organ.body.stiffness_N_per_m = 50;
+  ball.organ.body.damping_s = 0.002;
+  ball.organ.body.volume_stiffness_Pa = 2000;
+  ball.options.solver.method = method;
+  ball.options.solver.substeps = substeps;
+  return ball.model();
 }
 
 /// Positions at every 1/30 s over 1.5 s, stepping with substeps of `h`.

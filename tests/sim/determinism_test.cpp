@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "sim/model.h"
-#include "sim/shapes.h"
+#include "support/beating_ball.h"
 #include "sim/solvers/step.h"
 
 namespace systole::sim {
@@ -14,26 +14,15 @@ namespace {
 using sim::Method;
 
 Model ball(Method method, int threads) {
-  const auto surface = test::icosphere(0.05, 4);  // 2,562 particles: colours big enough to split.
-  std::vector<int> region(surface.positions.size());
-  for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() > 0 ? 0 : -1;
-  sim::OrganParams organ;
-  organ.name = "ball";
-  organ.body.bending_N_per_m = 50;
-  organ.body.stiffness_N_per_m = 100;  // Soft and lightly damped, so 100 us explicit substeps are stable.
-  organ.body.damping_s = 0.0005;
-  sim::RegionParams top;
-  top.name = "top";
-  top.drive.waveform = sim::Waveform::kCardiac;
-  top.drive.rate_hz = 1.2;
-  top.drive.amplitude = 0.12;
-  organ.regions.push_back(top);
-  ModelOptions options;
-  options.solver.method = method;
-  options.solver.substeps = method == Method::kExplicit ? 40 : method == Method::kXpbd ? 4 : 1;
-  options.solver.threads = threads;
-  options.clip_s = 10;
-  return build_model(organ, test::geometry_of(surface, region), options);
+  test::BeatingBall ball(4, 1.2, 0.12);  // 2,562 particles: colours big enough to split.
+  ball.top().drive.waveform = sim::Waveform::kCardiac;
+  ball.organ.body.bending_N_per_m = 50;
+  ball.organ.body.stiffness_N_per_m = 100;  // Soft and lightly damped, so 100 us explicit substeps are stable.
+  ball.organ.body.damping_s = 0.0005;
+  ball.options.solver.method = method;
+  ball.options.solver.substeps = method == Method::kExplicit ? 40 : method == Method::kXpbd ? 4 : 1;
+  ball.options.solver.threads = threads;
+  return ball.model();
 }
 
 State run(const Model& m, int steps) {

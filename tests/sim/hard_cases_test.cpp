@@ -9,7 +9,7 @@
 #include <string>
 
 #include "sim/model.h"
-#include "sim/shapes.h"
+#include "support/beating_ball.h"
 #include "sim/solvers/step.h"
 
 namespace systole::sim {
@@ -20,26 +20,17 @@ using sim::Method;
 enum class Outcome { kStable, kDiagnosed };
 
 /// A soft ball whose upper half beats: the common body of the cases.
-struct Case {
-  mesh::TriangleMesh surface = test::icosphere(0.05, 2);  // 162 vertices: stability, not resolution.
-  sim::OrganParams organ;
-  ModelOptions options;
+struct Case : test::BeatingBall {
   double seconds = 3;
   double dt_s = 1.0 / 240;
-  /// Applied to the built model, for what a scene cannot express (mass ratios).
-  std::function<void(Model&)> adjust;
+  /// Applied to the body's parts before the model is built, for what a scene cannot
+  /// express (mass ratios).
+  std::function<void(BodyParts&)> adjust;
 
-  Case() {
-    organ.name = "ball";
+  Case() : BeatingBall(2) {  // 162 vertices: stability, not resolution.
     // Bending makes the shape unique; without it (and with no volume constraint, as on the
     // broken mesh) a membrane may switch wrinkle patterns from cycle to cycle.
     organ.body.bending_N_per_m = 20;
-    sim::RegionParams top;
-    top.name = "top";
-    top.drive.waveform = sim::Waveform::kSine;
-    top.drive.rate_hz = 1.5;
-    top.drive.amplitude = 0.15;
-    organ.regions.push_back(top);
     options.clip_s = 600;
   }
 };
@@ -52,18 +43,17 @@ struct Result {
 };
 
 Result simulate(const Case& c, Method method, int substeps) {
-  std::vector<int> region(c.surface.positions.size(), -1);
-  for (std::size_t i = 0; i < region.size(); ++i) region[i] = c.surface.positions[i].y() > 0 ? 0 : -1;
-  mesh::OrganGeometry geometry = test::geometry_of(c.surface, region);
+  const mesh::TriangleMesh& surface = c.geometry.mesh.surface;
   ModelOptions options = c.options;
   options.solver.method = method;
   options.solver.substeps = substeps;
-  Model m = build_model(c.organ, geometry, options);
-  if (c.adjust) c.adjust(m);
+  BodyParts parts = surface_body(c.organ, c.geometry);
+  if (c.adjust) c.adjust(parts);
+  const Model m = build_model(c.organ, std::move(parts), options);
   State s = initial_state(m);
 
   Result r;
-  const double v0 = enclosed_volume(m.rest_positions, c.surface.triangles);
+  const double v0 = enclosed_volume(m.rest_positions, surface.triangles);
   const int steps = static_cast<int>(std::lround(c.seconds / c.dt_s));
   const int per_cycle = static_cast<int>(std::lround(1.0 / (c.organ.regions[0].drive.rate_hz * c.dt_s)));
   double last_cycle_volume = v0;
@@ -77,7 +67,7 @@ Result simulate(const Case& c, Method method, int substeps) {
     const double extent = (s.x.rowwise().maxCoeff() - s.x.rowwise().minCoeff()).norm();
     r.max_extent_ratio = std::max(r.max_extent_ratio, extent / m.rest_extent_m);
     if (k % per_cycle == 0) {
-      const double v = enclosed_volume(s.x, c.surface.triangles);
+      const double v = enclosed_volume(s.x, surface.triangles);
       if (k > std::max(2 * per_cycle, steps / 2)) r.max_cycle_drift = std::max(r.max_cycle_drift, std::abs(v - last_cycle_volume) / v0);
       last_cycle_volume = v;
     }
@@ -113,8 +103,9 @@ std::vector<Expectation> expectations() {
        }, Outcome::kStable, Outcome::kDiagnosed, Outcome::kStable},
       {"bad triangles", [] {
          Case c;  // A sliver, a zero-area triangle, a duplicate vertex and a non-manifold fin.
-         auto& p = c.surface.positions;
-         auto& t = c.surface.triangles;
+         mesh::TriangleMesh broken = c.geometry.mesh.surface;
+         auto& p = broken.positions;
+         auto& t = broken.triangles;
          const int n = static_cast<int>(p.size());
          p.push_back(p[0]);                                    // Duplicate of vertex 0.
          p.push_back(0.5 * (p[1] + p[2]));                     // On the segment 1-2: zero area.
@@ -124,6 +115,7 @@ std::vector<Expectation> expectations() {
          t.push_back({1, n + 1, 2});
          t.push_back({3, n + 2, 4});
          t.push_back({t[0][0], t[0][1], n + 3});               // Third triangle on edge t0[0]-t0[1].
+         c.set_surface(broken);
          return c;
        }, Outcome::kStable, Outcome::kDiagnosed, Outcome::kStable},
       {"amplitude 100%", [] {
@@ -133,14 +125,13 @@ std::vector<Expectation> expectations() {
        }, Outcome::kStable, Outcome::kDiagnosed, Outcome::kStable},
       {"mass ratio 1e3", [] {
          Case c;
-         c.adjust = [](Model& m) {
-           for (int i = 0; i < m.particle_count(); i += 2) m.inverse_mass[i] *= 1e3;
+         c.adjust = [](BodyParts& parts) {
+           for (Eigen::Index i = 0; i < parts.mass_kg.size(); i += 2) parts.mass_kg[i] /= 1e3;
          };
          return c;
        }, Outcome::kStable, Outcome::kDiagnosed, Outcome::kStable},
       {"10 minutes", [] {
          Case c;  // A heavy, soft ball that even the explicit solver carries at 1 ms substeps.
-         c.surface = test::icosphere(0.05, 2);
          c.organ.body.mass_kg = 1.0;
          c.organ.body.stiffness_N_per_m = 50;
          c.organ.body.damping_s = 0.001;

@@ -11,39 +11,17 @@
 #include "sim/forces.h"
 #include "sim/solvers/implicit_euler.h"
 #include "sim/model.h"
-#include "sim/shapes.h"
+#include "support/beating_ball.h"
 #include "sim/solvers/step.h"
 
 namespace systole::sim {
 namespace {
 
-/// A 5 cm sphere whose upper half is one driven region, stepped by the implicit solver.
-struct Ball {
-  sim::OrganParams organ;
-  sim::SolverParams solver;
-  mesh::OrganGeometry geometry;
-  std::vector<sim::InteractionParams> interactions;
-
-  explicit Ball(double rate_hz = 1.5, double amplitude = 0.15, int levels = 3) {
-    const auto surface = test::icosphere(0.05, levels);
-    std::vector<int> region(surface.positions.size(), -1);
-    for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() > 0 ? 0 : -1;
-    geometry = test::geometry_of(surface, region);
-    organ.name = "ball";
-    sim::RegionParams top;
-    top.name = "top";
-    top.drive.waveform = sim::Waveform::kSine;
-    top.drive.rate_hz = rate_hz;
-    top.drive.amplitude = amplitude;
-    organ.regions.push_back(top);
-    solver.method = sim::Method::kImplicit;
-  }
-  Model model() const {
-    ModelOptions options;
-    options.solver = solver;
-    options.clip_s = 10.0;
-    options.interactions = interactions;
-    return build_model(organ, geometry, options);
+/// A 5 cm sphere whose upper half is one driven region (support/beating_ball.h), stepped
+/// by the implicit solver.
+struct Ball : test::BeatingBall {
+  explicit Ball(double rate_hz = 1.5, double amplitude = 0.15, int levels = 3) : BeatingBall(levels, rate_hz, amplitude) {
+    options.solver.method = sim::Method::kImplicit;
   }
 };
 
@@ -129,7 +107,7 @@ TEST(Implicit, PinnedParticlesStayPut) {
 TEST(Implicit, DrivePeriodShowsInTheVolume) {
   Ball ball(1.5, 0.15, 2);
   ball.organ.body.volume_stiffness_Pa = 2000;
-  ball.solver.substeps = 1;
+  ball.options.solver.substeps = 1;
   const Model m = ball.model();
   const double dt = 1.0 / 60;
   const int settle = 60, n = 60 * 4;  // 4 s = 6 periods after 1 s of settling.
@@ -156,16 +134,16 @@ Ball stiff_ball() {
   Ball ball(1.2, 0.2);
   ball.organ.body.stiffness_N_per_m = 5000;
   ball.organ.body.volume_stiffness_Pa = 1e7;
-  ball.solver.substeps = 1;
+  ball.options.solver.substeps = 1;
   return ball;
 }
 
 TEST(Implicit, StableAtAFrameStepWhereExplicitBlowsUp) {
   const double dt = 1.0 / 30;
   Ball ball = stiff_ball();
-  ball.solver.method = sim::Method::kExplicit;
+  ball.options.solver.method = sim::Method::kExplicit;
   const Model explicit_model = ball.model();
-  ball.solver.method = sim::Method::kImplicit;
+  ball.options.solver.method = sim::Method::kImplicit;
   const Model implicit_model = ball.model();
 
   State e = initial_state(explicit_model);
@@ -196,7 +174,7 @@ TEST(Implicit, ErrorShrinksWithTheStep) {
   // Positions after 0.25 s at dt, 2 dt, 4 dt against a 1/7680 s reference of the same solver:
   // backward Euler is first order, so halving the step about halves the error.
   Ball ball(2.0, 0.2, 2);
-  ball.solver.substeps = 1;
+  ball.options.solver.substeps = 1;
   const Model m = ball.model();
   const double t = 0.25;
   const State reference = run(m, 1.0 / 7680, t);
@@ -210,7 +188,7 @@ TEST(Implicit, ErrorShrinksWithTheStep) {
 
   // And the limit is the explicit solver's: the same forces, integrated another way.
   Ball explicit_ball = ball;
-  explicit_ball.solver.method = sim::Method::kExplicit;
+  explicit_ball.options.solver.method = sim::Method::kExplicit;
   const State explicit_reference = run(explicit_ball.model(), 1.0 / 7680, t);
   const double motion = (reference.x - m.rest_positions).colwise().norm().maxCoeff();
   EXPECT_LT(max_distance(explicit_reference, reference), 0.1 * e1) << "motion " << motion;
@@ -220,9 +198,9 @@ TEST(Implicit, AgreesWithXpbdAsTheStepShrinks) {
   // XPBD solves the same springs and volume as constraints; both tend to the same motion.
   Ball ball(2.0, 0.2, 2);
   const double t = 0.25;
-  ball.solver.substeps = 1;
+  ball.options.solver.substeps = 1;
   const Model implicit_model = ball.model();
-  ball.solver.method = sim::Method::kXpbd;
+  ball.options.solver.method = sim::Method::kXpbd;
   const Model xpbd_model = ball.model();
   std::vector<double> gap;
   double motion = 0;
@@ -245,7 +223,7 @@ TEST(Implicit, StepSolvesBackwardEulerToSecondOrder) {
   ball.organ.regions[0].drive.waveform = sim::Waveform::kNone;
   ball.organ.body.drag_per_s = 0;
   ball.organ.body.volume_stiffness_Pa = 1e6;
-  ball.solver.substeps = 1;
+  ball.options.solver.substeps = 1;
   const Model m = ball.model();
   const double h = 1.0 / 60;
   auto residual = [&](double eps) {
@@ -296,7 +274,7 @@ TEST(Implicit, GrabPullsItsPatchTowardsTheHandle) {
   grab.at_m = Eigen::Vector3d(0.05, 0, 0);
   grab.radius_m = 0.012;
   grab.path = {{0.0, Eigen::Vector3d(0.05, 0, 0)}, {0.5, Eigen::Vector3d(0.07, 0, 0)}};
-  ball.interactions.push_back(grab);
+  ball.options.interactions.push_back(grab);
   const Model m = ball.model();
   ASSERT_EQ(m.grabs.size(), 1u);
   const State s = run(m, 1.0 / 60, 0.5);

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/model.h"
-#include "sim/shapes.h"
+#include "support/shapes.h"
 #include "sim/solvers/step.h"
 
 namespace systole::sim {

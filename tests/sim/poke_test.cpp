@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "sim/model.h"
-#include "sim/shapes.h"
+#include "support/beating_ball.h"
 #include "sim/solvers/step.h"
 
 namespace systole::sim {
@@ -18,39 +18,22 @@ constexpr double kRadius = 0.05;
 constexpr double kPokeStart = 2.0;
 
 Model beating_ball(Method method, bool poked) {
-  const auto surface = test::icosphere(kRadius, 2);
-  std::vector<int> region(surface.positions.size());
-  // The top half beats; a cap at the bottom is pinned, as vessels hold a heart, so a push
-  // dents the body instead of sending it away.
-  for (std::size_t i = 0; i < region.size(); ++i) {
-    const double y = surface.positions[i].y();
-    region[i] = y > 0 ? 0 : y < -0.8 * kRadius ? 1 : -1;
-  }
-  sim::OrganParams organ;
-  organ.name = "ball";
-  organ.body.mass_kg = 0.5;
-  organ.body.stiffness_N_per_m = 100;
-  organ.body.damping_s = 0.002;
-  organ.body.volume_stiffness_Pa = 3000;
-  organ.body.drag_per_s = 3;
+  test::BeatingBall ball(2, 1.2, 0.12, kRadius);
+  ball.top().drive.waveform = sim::Waveform::kCardiac;
+  ball.pin_base(0.8);
+  sim::BodyParams& body = ball.organ.body;
+  body.mass_kg = 0.5;
+  body.stiffness_N_per_m = 100;
+  body.damping_s = 0.002;
+  body.volume_stiffness_Pa = 3000;
+  body.drag_per_s = 3;
   // Bending makes the shape unique: without it a thin membrane can settle into another
   // wrinkle pattern after a hard push and never quite return (measured: 2 mm for ever,
   // against 0.02 mm eight beats on with bending).
-  organ.body.bending_N_per_m = 20;
-  sim::RegionParams top;
-  top.name = "top";
-  top.drive.waveform = sim::Waveform::kCardiac;
-  top.drive.rate_hz = 1.2;
-  top.drive.amplitude = 0.12;
-  organ.regions.push_back(top);
-  sim::RegionParams base;
-  base.name = "base";
-  base.pinned = true;
-  organ.regions.push_back(base);
-  ModelOptions options;
+  body.bending_N_per_m = 20;
+  ModelOptions& options = ball.options;
   options.solver.method = method;
   options.solver.substeps = method == Method::kExplicit ? 20 : method == Method::kXpbd ? 4 : 1;
-  options.clip_s = 10;
   if (poked) {
     sim::InteractionParams poke;  // A 0.1 s push into the side of the ball.
     poke.at_m = Eigen::Vector3d(kRadius, 0, 0);
@@ -60,7 +43,7 @@ Model beating_ball(Method method, bool poked) {
     poke.duration_s = 0.1;
     options.interactions.push_back(poke);
   }
-  return build_model(organ, test::geometry_of(surface, region), options);
+  return ball.model();
 }
 
 const char* name_of(Method m) {

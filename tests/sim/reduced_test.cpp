@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "sim/reduced.h"
-#include "sim/shapes.h"
+#include "support/shapes.h"
 #include "sim/solvers/step.h"
 
 namespace systole::sim {

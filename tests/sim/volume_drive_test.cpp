@@ -8,7 +8,7 @@
 #include "sim/model.h"
 #include "sim/state.h"
 #include "sim/solvers/step.h"
-#include "shapes.h"
+#include "support/shapes.h"
 
 namespace systole::sim {
 namespace {

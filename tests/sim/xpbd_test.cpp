@@ -7,36 +7,14 @@
 
 #include "sim/model.h"
 #include "sim/solvers/step.h"
-#include "sim/shapes.h"
+#include "support/beating_ball.h"
 
 namespace systole::sim {
 namespace {
 
-/// A 5 cm sphere whose upper half is one driven region.
-struct Ball {
-  sim::OrganParams organ;
-  sim::SolverParams solver;
-  mesh::OrganGeometry geometry;
-
-  explicit Ball(double rate_hz = 1.5, double amplitude = 0.15) {
-    const auto surface = test::icosphere(0.05, 3);
-    std::vector<int> region(surface.positions.size(), -1);
-    for (std::size_t i = 0; i < region.size(); ++i) region[i] = surface.positions[i].y() > 0 ? 0 : -1;
-    geometry = test::geometry_of(surface, region);
-    organ.name = "ball";
-    sim::RegionParams top;
-    top.name = "top";
-    top.drive.waveform = sim::Waveform::kSine;
-    top.drive.rate_hz = rate_hz;
-    top.drive.amplitude = amplitude;
-    organ.regions.push_back(top);
-  }
-  Model model() const {
-    ModelOptions options;
-    options.solver = solver;
-    options.clip_s = 10.0;
-    return build_model(organ, geometry, options);
-  }
+/// A 5 cm sphere whose upper half is one driven region (support/beating_ball.h).
+struct Ball : test::BeatingBall {
+  explicit Ball(double rate_hz = 1.5, double amplitude = 0.15) : BeatingBall(3, rate_hz, amplitude) {}
 };
 
 /// Volume after each of `steps` steps.

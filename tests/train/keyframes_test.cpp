@@ -26,8 +26,8 @@ using namespace testing;
 /// Writes the procedural key frames and the scene that trains the ball to them.
 std::filesystem::path write_squash_problem(const std::string& name, int budget) {
   const auto dir = scratch(name);
-  const Ball ball = icosphere(2);
-  write_obj(dir / "ball.obj", ball.vertices, ball.triangles);
+  const mesh::TriangleMesh ball = icosphere(2);
+  write_obj(dir / "ball.obj", ball.positions, ball.triangles);
   std::string target = "    target:\n      rate: 1.5 Hz\n      harmonics: 2\n      lock: [stiffness]\n      budget: " +
                        std::to_string(budget) + "\n      frames:\n";
   const int frames = 16;
@@ -36,7 +36,7 @@ std::filesystem::path write_squash_problem(const std::string& name, int budget) 
     // Each half shrinks about its own centre with a narrow pulse, the lower half later: a
     // kinematic scaling, not springs.
     auto pulse = [](double x) { x -= std::floor(x); return x < 0.4 ? 0.5 - 0.5 * std::cos(2 * std::numbers::pi * x / 0.4) : 0.0; };
-    std::vector<Eigen::Vector3d> v = ball.vertices;
+    std::vector<Eigen::Vector3d> v = ball.positions;
     for (auto& p : v) {
       const bool top = p.y() >= 0;
       const Eigen::Vector3d centre(0, top ? 0.015 : -0.015, 0);

@@ -49,8 +49,8 @@ double max_signal_difference(const scene::Drive& a, const scene::Drive& b) {
 
 TEST(Recovery, TunedDrivesComeBackToTheKnownOnesAndTheErrorToTheFloor) {
   const auto dir = scratch("recovery");
-  const Ball ball = icosphere(2);
-  write_obj(dir / "ball.obj", ball.vertices, ball.triangles);
+  const mesh::TriangleMesh ball = icosphere(2);
+  write_obj(dir / "ball.obj", ball.positions, ball.triangles);
   const std::string top = "{waveform: fourier, rate: 1 Hz, amplitude: 0.12, delay: 0.2 s, harmonics: [{amplitude: 0.5}]}";
   const std::string bottom = "{waveform: fourier, rate: 1 Hz, amplitude: 0.08, delay: 0.55 s, harmonics: [{amplitude: 0.5}]}";
   const std::string frames = write_truth_frames(dir, ball_scene(top, bottom, ""));
