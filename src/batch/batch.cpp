@@ -386,15 +386,8 @@ bool receive_result(int fd, JobResult& r) {
   // Die with the batch: a killed parent must not leave renders running (their SIGTERM
   // handler removes their temporaries).
   ::prctl(PR_SET_PDEATHSIG, SIGTERM);
-  if (options.parallel > 1) {
-    // Several renders share the cores: llvmpipe's threads per context (read when the
-    // context is created) default to all cores, which oversubscribes them.
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    const unsigned share = std::max(1u, cores / static_cast<unsigned>(options.parallel));
-    ::setenv("LP_NUM_THREADS", std::to_string(share).c_str(), 0);
-    // Terminal progress lines of several jobs would overwrite each other.
-    if (options.progress == clip::ProgressStyle::kTerminal) options.progress = clip::ProgressStyle::kNone;
-  }
+  // Terminal progress lines of several jobs would overwrite each other.
+  if (options.parallel > 1 && options.progress == clip::ProgressStyle::kTerminal) options.progress = clip::ProgressStyle::kNone;
   const JobResult r = run_job(job, options);
   if (r.status == JobResult::Status::kFailed) std::cerr << "systole: " << job.name << ": " << r.error << "\n";
   send_result(fd, r);
@@ -403,6 +396,17 @@ bool receive_result(int fd, JobResult& r) {
 }
 
 }  // namespace
+
+int rasterizer_threads(std::size_t job_count, const BatchOptions& options) {
+  const bool in_children = !(job_count == 1 && !options.several);
+  if (in_children && options.parallel > 1) {
+    // Several renders share the cores: llvmpipe's threads per context default to all
+    // cores, which oversubscribes them.
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    return static_cast<int>(std::max(1u, cores / static_cast<unsigned>(options.parallel)));
+  }
+  return clip::kRasterizerThreads;
+}
 
 std::vector<JobResult> run_jobs(const std::vector<Job>& jobs, const BatchOptions& options,
                                 const std::function<void(const JobResult&)>& on_done) {

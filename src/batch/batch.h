@@ -99,6 +99,12 @@ struct JobResult {
 /// manifest. Never throws: a failure is a kFailed result carrying the message and code.
 JobResult run_job(const Job& job, const BatchOptions& options);
 
+/// llvmpipe's rasterizer threads for each render of this run: the cores shared among the jobs
+/// rendered at once in their own processes, else kRasterizerThreads. llvmpipe reads them
+/// (LP_NUM_THREADS) when a process creates its first context, so the command line sets the
+/// environment from this before run_jobs forks (a value the user set wins); the library never does.
+int rasterizer_threads(std::size_t job_count, const BatchOptions& options);
+
 /// Runs the jobs, options.parallel at a time. One job alone runs in this process; a batch
 /// runs each job in a child process, so a crash fails only its job and killing the batch
 /// (SIGINT/SIGTERM) stops the children, which remove their temporaries. `on_done` is called

@@ -1,6 +1,8 @@
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <string>
 
 #include "batch/batch.h"
 #include "clip/frame_list.h"
@@ -110,6 +112,10 @@ Command add_render_command(CLI::App& app) {
               print_plan(jobs, options);
               return 0;
             }
+            // llvmpipe reads its thread count when the process (or a batch child, which inherits
+            // it) creates its first context; a value the user set wins.
+            ::setenv("LP_NUM_THREADS", std::to_string(batch::rasterizer_threads(jobs.size(), options)).c_str(),
+                     /*overwrite=*/0);
             const bool json = options.progress == clip::ProgressStyle::kJson;
             const auto results = batch::run_jobs(jobs, options, [&](const batch::JobResult& r) {
               if (json) std::cout << batch::result_json(r) << std::endl;

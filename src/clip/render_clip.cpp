@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <numeric>
@@ -91,10 +90,8 @@ void map_colors(const DynamicColors& dynamic, const world::OrganBody& body, cons
 /// ready, so a stage that is briefly slower does not stall the other.
 constexpr int kPipelineDepth = 3;
 
-/// Threads the stages get, for the two-core machines we target (docs/performance.md):
-/// llvmpipe rasterizes on one thread of its own while the simulation and the encoder run
-/// beside it; more threads only contend for the same two cores.
-constexpr const char* kRasterizerThreads = "1";
+/// Encoder threads, for the two-core machines we target (docs/performance.md): see
+/// kRasterizerThreads.
 constexpr int kEncoderThreads = 1;
 
 /// The frames to render: the request's list checked against the clip, or every frame.
@@ -203,8 +200,6 @@ StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) 
                      request.limits);
   world::World world = world::build_world(scene);
   check_world_limits(scene, world, request.limits);
-  // Read when the process creates its first context; a value set by the caller wins.
-  setenv("LP_NUM_THREADS", kRasterizerThreads, /*overwrite=*/0);
   const int msaa = out.antialias == scene::Antialias::kMsaa4 ? 4 : out.antialias == scene::Antialias::kMsaa2 ? 2 : 0;
   render::Renderer renderer(out.width, out.height, msaa);
 

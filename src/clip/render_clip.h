@@ -1,6 +1,6 @@
 #pragma once
 // The frame loop: simulate -> render -> read back -> anti-alias -> encode, for one scene,
-// with the stages overlapped on threads (app/frame_pipeline.h).
+// with the stages overlapped on threads (clip/frame_pipeline.h).
 
 #include <filesystem>
 #include <string>
@@ -13,6 +13,13 @@
 #include "scene/scene.h"
 
 namespace systole::clip {
+
+/// llvmpipe's rasterizer threads for a render, for the two-core machines we target
+/// (docs/performance.md): it rasterizes on one thread of its own while the simulation and the
+/// encoder run beside it; more threads only contend for the same two cores. llvmpipe reads
+/// LP_NUM_THREADS when the process creates its first context: the command line sets it
+/// (rasterizer_threads in batch/batch.h), a library never touches the environment.
+inline constexpr int kRasterizerThreads = 1;
 
 struct RenderRequest {
   std::filesystem::path video;    ///< Video to write (format: video_format()); empty: no video.
