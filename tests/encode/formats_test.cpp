@@ -5,10 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 
 #include "common/error.h"
 #include "encode/gif_writer.h"
@@ -188,34 +186,6 @@ TEST(Palette, FewColoursComeBackExactly) {
   std::vector<std::uint8_t> indices;
   mapper.map(image, indices);
   for (int i = 0; i < 256; ++i) EXPECT_EQ(palette[indices[static_cast<std::size_t>(i)]], colors[i % 3]);
-}
-
-// Not a test: prints ms/frame and size at 720p for each format. Run with
-//   test_encode --gtest_also_run_disabled_tests --gtest_filter='Formats*Speed*'
-TEST(FormatsSpeed, DISABLED_Encode720p) {
-  const fs::path dir = scratch_dir();
-  constexpr int kUnique = 30, kCount = 90;
-  std::vector<Image> frames;
-  for (int i = 0; i < kUnique; ++i) frames.push_back(test::organ_frame(1280, 720, i));
-  for (const char* ext : {"mp4", "mkv", "webm", "gif"}) {
-    VideoSettings s = settings_for(*video_format_of(std::string("x.") + ext));
-    s.width = 1280, s.height = 720;
-    const fs::path file = dir / (std::string("clip.") + ext);
-    const auto start = std::chrono::steady_clock::now();
-    const std::clock_t cpu_start = std::clock();
-    {
-      auto sink = open_video(file, s);
-      for (int i = 0; i < kCount; ++i) {
-        const int k = i % (2 * kUnique);
-        sink->write(frames[static_cast<std::size_t>(k < kUnique ? k : 2 * kUnique - 1 - k)], i);
-      }
-      sink->finish();
-    }
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    const double cpu_ms = 1e3 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-    std::printf("720p %-4s: %.1f ms/frame wall, %.1f ms/frame CPU, %.0f kB for %d frames (%.1f kB/frame)\n", ext,
-                ms / kCount, cpu_ms / kCount, fs::file_size(file) / 1e3, kCount, fs::file_size(file) / 1e3 / kCount);
-  }
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 #include <png.h>
 #include <zlib.h>
 
-#include <chrono>
 #include <cstdio>
 #include <algorithm>
 #include <functional>
@@ -205,28 +204,6 @@ TEST(Png, SequenceWriterCreatesTheFolderAndNumbersFrames) {
   test::write_bytes(root / "file", "x");
   EXPECT_EQ(code_of([&] { PngSequenceWriter w(root / "file", 3); }), ExitCode::kCannotCreate);
   EXPECT_EQ(code_of([&] { PngSequenceWriter w(root / "file" / "sub", 3); }), ExitCode::kCannotCreate);
-}
-
-// Not a test: prints ms per 720p PNG. Run with --gtest_also_run_disabled_tests.
-TEST(PngSpeed, DISABLED_Write720p) {
-  const fs::path dir = scratch_dir();
-  Image image(1280, 720);
-  for (int y = 0; y < 720; ++y) {
-    for (int x = 0; x < 1280; ++x) {
-      std::uint8_t* p = image.row(y) + 3 * x;
-      p[0] = static_cast<std::uint8_t>(x / 6), p[1] = static_cast<std::uint8_t>(y / 4), p[2] = 60;
-    }
-  }
-  PngSequenceWriter writer(dir, 20);
-  const auto start = std::chrono::steady_clock::now();
-  for (int i = 0; i < 20; ++i) writer.write(image, i);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  std::printf("720p PNG: %.1f ms/frame, %.0f kB\n", ms / 20, fs::file_size(dir / frame_file_name(0, 20)) / 1e3);
-  const auto read_start = std::chrono::steady_clock::now();
-  for (int i = 0; i < 20; ++i) read_png(dir / frame_file_name(i, 20));
-  const double read_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - read_start).count();
-  std::printf("720p PNG read: %.1f ms/frame\n", read_ms / 20);
 }
 
 }  // namespace

@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -304,37 +302,6 @@ TEST(VideoWriter, FinishReplacesEarlierOutput) {
   write_clip(file, small_settings(), 5);
   EXPECT_EQ(test::json_value(test::ffprobe_json(file), "nb_read_frames"), "5");
   expect_only(dir, {"clip.mp4"});
-}
-
-// Not a test: prints ms/frame for 720p. Run with
-//   test_encode --gtest_also_run_disabled_tests --gtest_filter='*Speed*'
-TEST(VideoWriterSpeed, DISABLED_Encode720p) {
-  const fs::path dir = scratch_dir();
-  constexpr int kUnique = 60, kFrames = 240;
-  std::vector<Image> frames;
-  for (int i = 0; i < kUnique; ++i) frames.push_back(test::organ_frame(1280, 720, i));
-  for (const char* preset : {"veryfast", "ultrafast", "superfast", "medium"}) {
-    VideoSettings s;
-    s.preset = preset;
-    s.crf = 20;
-    s.threads = 2;
-    const fs::path file = dir / (std::string(preset) + ".mp4");
-    const auto start = std::chrono::steady_clock::now();
-    const std::clock_t cpu_start = std::clock();  // All threads: less sensitive to a busy machine.
-    {
-      VideoWriter writer(file, s);
-      for (int i = 0; i < kFrames; ++i) {
-        const int k = i % (2 * kUnique);  // Forward then backward: continuous motion.
-        writer.write(frames[k < kUnique ? k : 2 * kUnique - 1 - k], i);
-      }
-      writer.finish();
-    }
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    const double cpu_ms = 1e3 * static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-    std::printf("720p %-9s crf 20 threads 2: %.2f ms/frame wall, %.2f ms/frame CPU, %.0f kB for %d frames, profile %s\n",
-                preset, ms / kFrames, cpu_ms / kFrames, fs::file_size(file) / 1e3, kFrames,
-                test::json_value(test::ffprobe_json(file), "profile").c_str());
-  }
 }
 
 }  // namespace
