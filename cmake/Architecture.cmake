@@ -10,15 +10,16 @@ set(SYSTOLE_MODULES
   "mesh:common,scene"
   "sim:common,mesh"
   "world:common,scene,mesh,sim"
-  "train:common,scene,mesh,sim,world"
-  "plot:common"
+  "train:common,scene,mesh,sim,world,chart"
+  "chart:common"
+  "plot:common,chart"
   "render:common,scene,mesh"
   "encode:common"
-  "overlay:common,scene,plot"
-  "clip:common,scene,mesh,sim,world,plot,render,encode,overlay"
-  "batch:common,scene,mesh,sim,world,plot,render,encode,overlay,clip"
-  "study:common,scene,mesh,sim,world,plot,render,encode,overlay,clip"
-  "cli:common,scene,mesh,sim,world,train,plot,render,encode,overlay,clip,batch,study")
+  "overlay:common,scene,chart,plot"
+  "clip:common,scene,mesh,sim,world,chart,plot,render,encode,overlay"
+  "batch:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,clip"
+  "study:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,clip"
+  "cli:common,scene,mesh,sim,world,train,chart,plot,render,encode,overlay,clip,batch,study")
 
 # The one place the simulator meets the scene: the translation of a scene into sim's own
 # parameter structs. No other file under src/sim/ may include scene/.

@@ -9,17 +9,16 @@
 #include <string>
 #include <vector>
 
+#include "chart/axis.h"
 #include "common/image.h"
 
 namespace systole::plot {
 
-enum class Scale { kLinear, kLog };
-
-struct Axis {
-  std::string label;
-  Scale scale = Scale::kLinear;
-  double min = 0, max = 0;  ///< The shown range; min >= max: fitted to the data.
-};
+using chart::Axis;
+using chart::Scale;
+using chart::axis_fraction;
+using chart::ticks;
+using chart::tick_text;
 
 enum class Marker { kNone, kCircle, kSquare, kDiamond, kRing };
 
@@ -49,13 +48,5 @@ struct Figure {
 /// Draws the figure. Throws Error(kDataError) when a log axis meets a value <= 0 or a
 /// value is not finite, and Error(kNoInput) when the font is not installed.
 Image render(const Figure& figure);
-
-/// Where an axis puts a value: the fraction of the way from its min to its max (log
-/// axes in log10). unit: 1
-double axis_fraction(const Axis& axis, double value);
-
-/// Tick positions for a range: 1-2-5 steps on linear axes; on log axes decades (with 2 and
-/// 5 over at most three decades, every mantissa within one decade).
-std::vector<double> ticks(const Axis& axis);
 
 }  // namespace systole::plot

@@ -5,7 +5,7 @@
 
 #include "common/atomic_output.h"
 #include "common/error.h"
-#include "train/svg_plot.h"
+#include "chart/svg_chart.h"
 
 namespace systole::train {
 
@@ -86,13 +86,13 @@ void write_report(const std::filesystem::path& dir, const std::string& scene_pat
       if (t.regions[r].pinned) continue;
       std::vector<double> time;
       for (std::size_t k = 0; k < t.target_size[r].size(); ++k) time.push_back(t.measure_start_s + double(k) * t.dt_s);
-      const std::vector<Series> series = {
+      const std::vector<chart::SvgSeries> series = {
           {"target", "#222222", false, t.target_size[r]},
           {"fitted (untuned)", "#e08a2c", true, t.before.size[r]},
           {"tuned", "#c0392b", false, t.after.size[r]},
       };
       write_text(dir / plot_name(t, t.regions[r]),
-                 svg_line_chart(t.organ + " / " + t.regions[r].name + ": region size", "time [s]", "size relative to rest", time, series));
+                 chart::svg_line_chart(t.organ + " / " + t.regions[r].name + ": region size", "time [s]", "size relative to rest", time, series));
     }
   }
   write_text(dir / "report.md", report_markdown(scene_path, tunings));

@@ -9,20 +9,6 @@
 namespace systole::plot {
 namespace {
 
-TEST(Plot, LogAxisMapsDecadesEvenly) {
-  const Axis axis{"", Scale::kLog, 1, 100};
-  EXPECT_DOUBLE_EQ(axis_fraction(axis, 1), 0.0);
-  EXPECT_NEAR(axis_fraction(axis, 10), 0.5, 1e-12);
-  EXPECT_DOUBLE_EQ(axis_fraction(axis, 100), 1.0);
-  EXPECT_EQ(ticks(Axis{"", Scale::kLog, 0.5, 2000}), (std::vector<double>{1, 10, 100, 1000}));
-  EXPECT_EQ(ticks(Axis{"", Scale::kLog, 0.95, 3.5}), (std::vector<double>{1, 2, 3}));
-}
-
-TEST(Plot, LinearTicksAreRound) {
-  const auto t = ticks(Axis{"", Scale::kLinear, 0.3, 9.7});
-  EXPECT_EQ(t, (std::vector<double>{2, 4, 6, 8}));
-}
-
 TEST(Plot, PointsLandWhereTheyBelongInTheirColour) {
   Figure f;
   f.width = 400;

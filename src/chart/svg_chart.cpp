@@ -1,10 +1,12 @@
-#include "train/svg_plot.h"
+#include "chart/svg_chart.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-namespace systole::train {
+#include "chart/axis.h"
+
+namespace systole::chart {
 
 namespace {
 
@@ -19,24 +21,14 @@ std::string escape(const std::string& text) {
   return out;
 }
 
-/// About five round tick values covering [lo, hi] (1, 2 or 5 times a power of ten apart).
-std::vector<double> ticks(double lo, double hi) {
-  const double raw = (hi - lo) / 5.0;
-  const double power = std::pow(10.0, std::floor(std::log10(raw)));
-  const double step = raw / power < 1.5 ? power : raw / power < 3.5 ? 2 * power : 5 * power;
-  std::vector<double> t;
-  for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9 * step; v += step) t.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
-  return t;
-}
-
 }  // namespace
 
 std::string svg_line_chart(const std::string& title, const std::string& x_label, const std::string& y_label,
-                           const std::vector<double>& x, const std::vector<Series>& series) {
+                           const std::vector<double>& x, const std::vector<SvgSeries>& series) {
   const double width = 640, height = 360, left = 70, right = 20, top = 40, bottom = 50;
   double x_lo = x.empty() ? 0 : x.front(), x_hi = x.empty() ? 1 : x.back();
   double y_lo = 1e300, y_hi = -1e300;
-  for (const Series& s : series)
+  for (const SvgSeries& s : series)
     for (double v : s.y)
       if (std::isfinite(v)) y_lo = std::min(y_lo, v), y_hi = std::max(y_hi, v);
   if (y_lo > y_hi) y_lo = 0, y_hi = 1;
@@ -52,20 +44,20 @@ std::string svg_line_chart(const std::string& title, const std::string& x_label,
     << width << " " << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   o << "<text x=\"" << width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << escape(title) << "</text>\n";
-  for (double v : ticks(x_lo, x_hi)) {
+  for (double v : ticks(Axis{x_label, Scale::kLinear, x_lo, x_hi})) {
     o << "<line x1=\"" << px(v) << "\" y1=\"" << top << "\" x2=\"" << px(v) << "\" y2=\"" << height - bottom
-      << "\" stroke=\"#e4e4e4\"/>\n<text x=\"" << px(v) << "\" y=\"" << height - bottom + 16 << "\" text-anchor=\"middle\">" << v << "</text>\n";
+      << "\" stroke=\"#e4e4e4\"/>\n<text x=\"" << px(v) << "\" y=\"" << height - bottom + 16 << "\" text-anchor=\"middle\">" << tick_text(v) << "</text>\n";
   }
-  for (double v : ticks(y_lo, y_hi)) {
+  for (double v : ticks(Axis{y_label, Scale::kLinear, y_lo, y_hi})) {
     o << "<line x1=\"" << left << "\" y1=\"" << py(v) << "\" x2=\"" << width - right << "\" y2=\"" << py(v)
-      << "\" stroke=\"#e4e4e4\"/>\n<text x=\"" << left - 6 << "\" y=\"" << py(v) + 4 << "\" text-anchor=\"end\">" << v << "</text>\n";
+      << "\" stroke=\"#e4e4e4\"/>\n<text x=\"" << left - 6 << "\" y=\"" << py(v) + 4 << "\" text-anchor=\"end\">" << tick_text(v) << "</text>\n";
   }
   o << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << width - left - right << "\" height=\"" << height - top - bottom
     << "\" fill=\"none\" stroke=\"#444\"/>\n";
   o << "<text x=\"" << (left + width - right) / 2 << "\" y=\"" << height - 12 << "\" text-anchor=\"middle\">" << escape(x_label) << "</text>\n";
   o << "<text transform=\"translate(16 " << (top + height - bottom) / 2 << ") rotate(-90)\" text-anchor=\"middle\">" << escape(y_label) << "</text>\n";
   for (std::size_t k = 0; k < series.size(); ++k) {
-    const Series& s = series[k];
+    const SvgSeries& s = series[k];
     o << "<polyline fill=\"none\" stroke=\"" << s.color << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << " points=\"";
     for (std::size_t i = 0; i < s.y.size() && i < x.size(); ++i) {
       if (std::isfinite(s.y[i])) o << px(x[i]) << "," << py(s.y[i]) << " ";
@@ -80,4 +72,4 @@ std::string svg_line_chart(const std::string& title, const std::string& x_label,
   return o.str();
 }
 
-}  // namespace systole::train
+}  // namespace systole::chart
