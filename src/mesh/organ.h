@@ -5,7 +5,7 @@
 
 #include "mesh/inspect.h"
 #include "mesh/mesh.h"
-#include "scene/scene.h"
+#include "scene/organ.h"
 
 namespace systole::mesh {
 
