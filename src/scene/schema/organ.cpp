@@ -411,6 +411,54 @@ ValueSpec<ClipPlane> clip_spec() {
       });
 }
 
+namespace {
+
+ValueSpec<Transform> transform_spec() {
+  return map<Transform>({
+      field("translate", vec3(Dimension::kLength), &Transform::translate_m, "Position of the organ."),
+      field("rotate", vec3(Dimension::kAngle), &Transform::rotate_rad, "Euler angles, applied X, then Y, then Z."),
+      field("scale", number(open_closed(0, 1000)), &Transform::scale, "Uniform scale, applied before rotation."),
+  });
+}
+
+ValueSpec<Material> material_spec() {
+  return map<Material>({
+      field("color", color(), &Material::color, "Surface colour (sRGB)."),
+      field("specular", number(closed(0, 1)), &Material::specular, "Strength of the highlight."),
+      field("shininess", number(closed(1, 1000)), &Material::shininess,
+            "Blinn-Phong exponent: larger is a tighter highlight."),
+      field("opacity", number(closed(0, 1)), &Material::opacity,
+            "1 opaque; below 1 the organ is see-through (order-independent transparency, "
+            "docs/teaching-visuals.md)."),
+  });
+}
+
+ValueSpec<Body> body_spec() {
+  return map<Body>({
+      field("mass", quantity(Dimension::kMass, open_closed(0, 1000)), &Body::mass_kg,
+            "Total mass, spread over vertices by area."),
+      field("stiffness", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Body::stiffness_N_per_m,
+            "Spring stiffness of each surface edge."),
+      field("damping", quantity(Dimension::kTime, closed(0, 1)), &Body::damping_s,
+            "Stiffness-proportional damping time (c = k damping)."),
+      field("volume_stiffness", quantity(Dimension::kPressure, closed(0, 1e9)), &Body::volume_stiffness_Pa,
+            "Bulk modulus of the enclosed volume; 0 = no volume constraint."),
+      field("drag", quantity(Dimension::kRate, closed(0, 1000)), &Body::drag_per_s,
+            "Velocity damping towards rest (the surrounding tissue)."),
+      field("bending", quantity(Dimension::kStiffness, closed(0, 1e9)), &Body::bending_N_per_m,
+            "Stiffness of the springs across each edge, which resist folding; 0 = none."),
+      field("lattice", whole<int>(0, 64), &Body::lattice,
+            "Reduced model: voxels along the organ's longest side; their corners carry the motion and "
+            "the mesh follows (docs/accuracy.md). 0 = full model, every vertex a particle."),
+      field("volume_drive", drive_spec(), &Body::volume_drive,
+            "Drives the rest volume instead of rest lengths: V0(t) = V0 (1 + amplitude phi(t - delay)), "
+            "`amplitude` the fraction of volume added (lungs inflating). Needs `volume_stiffness` > 0 "
+            "and a closed surface."),
+  });
+}
+
+}  // namespace
+
 ValueSpec<Organ> organ_spec() {
   return map<Organ>(
       {
@@ -419,26 +467,9 @@ ValueSpec<Organ> organ_spec() {
           field("mesh", mesh_spec(), &Organ::mesh,
                 "Where the surface comes from: exactly one of `file` or `procedural`.")
               .required(),
-          field("transform",
-                map<Transform>({
-                    field("translate", vec3(Dimension::kLength), &Transform::translate_m, "Position of the organ."),
-                    field("rotate", vec3(Dimension::kAngle), &Transform::rotate_rad,
-                          "Euler angles, applied X, then Y, then Z."),
-                    field("scale", number(open_closed(0, 1000)), &Transform::scale,
-                          "Uniform scale, applied before rotation."),
-                }),
-                &Organ::transform, "Placement in the world, applied after units and centring."),
-          field("material",
-                map<Material>({
-                    field("color", color(), &Material::color, "Surface colour (sRGB)."),
-                    field("specular", number(closed(0, 1)), &Material::specular, "Strength of the highlight."),
-                    field("shininess", number(closed(1, 1000)), &Material::shininess,
-                          "Blinn-Phong exponent: larger is a tighter highlight."),
-                    field("opacity", number(closed(0, 1)), &Material::opacity,
-                          "1 opaque; below 1 the organ is see-through (order-independent transparency, "
-                          "docs/teaching-visuals.md)."),
-                }),
-                &Organ::material, "How the surface looks."),
+          field("transform", transform_spec(), &Organ::transform,
+                "Placement in the world, applied after units and centring."),
+          field("material", material_spec(), &Organ::material, "How the surface looks."),
           field("color_by",
                 choice<ColorBy>({{"material", ColorBy::kMaterial},
                                  {"region", ColorBy::kRegion},
@@ -457,29 +488,7 @@ ValueSpec<Organ> organ_spec() {
               "`strain`, `activation`: the values at the two ends of the colour map.")
               .shown_default("strain [-0.15, 0.15]; activation [0, 1]"),
           field("clip", clip_spec(), &Organ::clip, "Cuts the organ open along a plane.").shown_default("none"),
-          field("body",
-                map<Body>({
-                    field("mass", quantity(Dimension::kMass, open_closed(0, 1000)), &Body::mass_kg,
-                          "Total mass, spread over vertices by area."),
-                    field("stiffness", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Body::stiffness_N_per_m,
-                          "Spring stiffness of each surface edge."),
-                    field("damping", quantity(Dimension::kTime, closed(0, 1)), &Body::damping_s,
-                          "Stiffness-proportional damping time (c = k damping)."),
-                    field("volume_stiffness", quantity(Dimension::kPressure, closed(0, 1e9)),
-                          &Body::volume_stiffness_Pa, "Bulk modulus of the enclosed volume; 0 = no volume constraint."),
-                    field("drag", quantity(Dimension::kRate, closed(0, 1000)), &Body::drag_per_s,
-                          "Velocity damping towards rest (the surrounding tissue)."),
-                    field("bending", quantity(Dimension::kStiffness, closed(0, 1e9)), &Body::bending_N_per_m,
-                          "Stiffness of the springs across each edge, which resist folding; 0 = none."),
-                    field("lattice", whole<int>(0, 64), &Body::lattice,
-                          "Reduced model: voxels along the organ's longest side; their corners carry the motion and "
-                          "the mesh follows (docs/accuracy.md). 0 = full model, every vertex a particle."),
-                    field("volume_drive", drive_spec(), &Body::volume_drive,
-                          "Drives the rest volume instead of rest lengths: V0(t) = V0 (1 + amplitude phi(t - delay)), "
-                          "`amplitude` the fraction of volume added (lungs inflating). Needs `volume_stiffness` > 0 "
-                          "and a closed surface."),
-                }),
-                &Organ::body, "The soft body's physical parameters."),
+          field("body", body_spec(), &Organ::body, "The soft body's physical parameters."),
           field("regions", list(region_spec(), 0, 256, "list of regions"), &Organ::regions,
                 "Parts with their own rhythm and stiffness, applied in order."),
           field("target", target_spec(), &Organ::target,
