@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "mesh/geometry.h"
-#include "scene/scene.h"
+#include "scene/organ.h"
 
 namespace systole::mesh {
 

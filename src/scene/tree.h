@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/scene.h"
+#include "scene/origin.h"
 
 namespace systole::scene {
 

@@ -1,103 +1,134 @@
-// Output formats, slow motion, loops, title cards and captions in the scene
-// (docs/teaching-visuals.md): what they resolve to, and errors that say why.
+// Scene keys of the 3D teaching visuals: opacity, clip, color_by, camera orbit and path, views.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
-#include "scene_test_util.h"
+#include "scene/scene_test_util.h"
 
 namespace systole::scene {
 namespace {
 
+using testing::kMinimalOrgans;
 using testing::load_error;
 
-/// A heart at 72 bpm (0.8333 s a beat) with one more rhythm; `output` and `extra` are YAML.
-std::string heart(const std::string& output, const std::string& extra = "", const std::string& second_rate = "72 bpm") {
-  return "organs:\n  - name: heart\n    mesh: {procedural: heart}\n    regions:\n"
-         "      - {name: left_ventricle, drive: {waveform: cardiac, rate: 72 bpm, amplitude: 0.1}}\n"
-         "      - {name: left_atrium, drive: {waveform: cardiac, rate: " + second_rate + ", amplitude: 0.1}}\n"
-         "output: " + output + "\n" + extra;
+Scene load_text(const std::string& yaml) { return load_from_string(yaml, "scenes/test.yaml", {}); }
+
+TEST(TeachingVisuals, DefaultsKeepTheOpaqueFixedSingleView) {
+  const Scene s = load_text(kMinimalOrgans);
+  EXPECT_EQ(s.organs[0].material.opacity, 1.0);
+  EXPECT_FALSE(s.organs[0].clip.enabled);
+  EXPECT_EQ(s.organs[0].color_by, ColorBy::kMaterial);
+  EXPECT_FALSE(s.camera.orbit.enabled);
+  EXPECT_TRUE(s.camera.path.empty());
+  EXPECT_TRUE(s.views.empty());
 }
 
-Scene load(const std::string& yaml) { return load_from_string(yaml, "scenes/test.yaml", {}); }
-
-TEST(SceneFormat, ComesFromTheFileExtensionOrTheKeyElseMp4) {
-  EXPECT_EQ(load(heart("{duration: 1 s}")).output.format, Format::kMp4);
-  EXPECT_EQ(load(heart("{file: out/a.gif, fps: 25, duration: 1 s}")).output.format, Format::kGif);
-  EXPECT_EQ(load(heart("{file: out/a.WEBM, duration: 1 s}")).output.format, Format::kWebm);
-  EXPECT_EQ(load(heart("{format: mkv, duration: 1 s}")).output.format, Format::kMkv);
-  EXPECT_EQ(load(heart("{file: out/a.bin, format: mkv, duration: 1 s}")).output.format, Format::kMkv);
+TEST(TeachingVisuals, ReadsEveryKey) {
+  const Scene s = load_text(
+      "organs:\n"
+      "  - name: heart\n"
+      "    mesh: {procedural: heart}\n"
+      "    material: {opacity: 0.5}\n"
+      "    color_by: strain\n"
+      "    clip: {point: [0, 0, 1 cm], normal: [0, 0, -2], cut_color: \"#ffffff\"}\n"
+      "    regions:\n"
+      "      - {name: aorta, opacity: 0.25}\n"
+      "  - name: other\n"
+      "    mesh: {procedural: heart}\n"
+      "    color_by: activation\n"
+      "camera: {orbit: {speed: 30 deg/s}}\n"
+      "views:\n"
+      "  - {title: \"Normal heart\", organs: [heart]}\n"
+      "  - camera: {path: [{time: 0 s, position: [0, 0, 1], target: [0, 0, 0]}, {time: 2 s, position: [1, 0, 0], target: [0, 0, 0]}]}\n"
+      "    clip: {normal: [1, 0, 0]}\n");
+  const Organ& heart = s.organs[0];
+  EXPECT_EQ(heart.material.opacity, 0.5);
+  EXPECT_TRUE(heart.regions[0].has_opacity);
+  EXPECT_EQ(heart.regions[0].opacity, 0.25);
+  EXPECT_EQ(heart.color_by, ColorBy::kStrain);
+  EXPECT_EQ(heart.color_range, Eigen::Vector2d(-0.15, 0.15));  // Default by color_by.
+  EXPECT_EQ(s.organs[1].color_range, Eigen::Vector2d(0, 1));
+  EXPECT_TRUE(heart.clip.enabled);
+  EXPECT_NEAR(heart.clip.point_m.z(), 0.01, 1e-15);
+  EXPECT_EQ(heart.clip.normal, Eigen::Vector3d(0, 0, -1));  // Normalised.
+  EXPECT_TRUE(s.camera.orbit.enabled);
+  EXPECT_NEAR(s.camera.orbit.speed_rad_per_s, 30 * std::numbers::pi / 180, 1e-15);
+  ASSERT_EQ(s.views.size(), 2u);
+  EXPECT_EQ(s.views[0].title, "Normal heart");
+  EXPECT_FALSE(s.views[0].has_camera);
+  EXPECT_EQ(s.views[0].organs, std::vector<std::string>{"heart"});
+  EXPECT_TRUE(s.views[1].has_camera);
+  EXPECT_EQ(s.views[1].camera.path.size(), 2u);
+  EXPECT_EQ(s.views[1].camera.position_m, Eigen::Vector3d(0, 0, 1));  // The first key.
+  EXPECT_TRUE(s.views[1].clip.enabled);
 }
 
-TEST(SceneFormat, ContradictionsAndFastGifsAreErrors) {
-  auto f = load_error(heart("{file: out/a.gif, format: webm, duration: 1 s}"));
-  EXPECT_NE(f.message.find("output.format: 'webm' contradicts the file 'out/a.gif' (its extension names gif)"), std::string::npos)
-      << f.message;
-  f = load_error(heart("{format: gif, fps: 60, duration: 1 s}"));
-  EXPECT_NE(f.message.find("output.fps: 60 is outside (0, 50] for a GIF"), std::string::npos) << f.message;
-  EXPECT_EQ(f.message.rfind("scenes/test.yaml:7:", 0), 0u) << f.message;
+TEST(TeachingVisuals, ErrorsNameThePlaceAndTheRule) {
+  const std::string organ = "organs:\n  - name: heart\n    mesh: {procedural: heart}\n";
+  auto e = load_error(organ + "    material: {opacity: 1.5}\n");
+  EXPECT_NE(e.message.find("scenes/test.yaml:4:"), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find("organs[0].material.opacity"), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find("[0, 1]"), std::string::npos) << e.message;
+
+  e = load_error(organ + "    clip: {point: [0, 0, 0], normall: [0, 0, 1]}\n");
+  EXPECT_NE(e.message.find("unknown key 'normall'"), std::string::npos) << e.message;
+
+  e = load_error(organ + "    color_by: pressure\n");
+  EXPECT_NE(e.message.find("material, region, strain, activation"), std::string::npos) << e.message;
+
+  e = load_error(organ + "    color_range: [0.1, -0.1]\n");
+  EXPECT_NE(e.message.find("lo < hi"), std::string::npos) << e.message;
+
+  e = load_error(organ + "camera: {orbit: {speed: 20}}\n");
+  EXPECT_NE(e.message.find("camera.orbit.speed"), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find("deg/s"), std::string::npos) << e.message;
+
+  e = load_error(organ + "camera: {orbit: {speed: 20 deg/s}, path: [{time: 0 s, position: [0, 0, 1], target: [0, 0, 0]}]}\n");
+  EXPECT_NE(e.message.find("not both"), std::string::npos) << e.message;
+
+  e = load_error(organ + "camera: {path: [{time: 1 s, position: [0, 0, 1], target: [0, 0, 0]}, {time: 1 s, position: [0, 0, 2], target: [0, 0, 0]}]}\n");
+  EXPECT_NE(e.message.find("times must increase"), std::string::npos) << e.message;
+
+  e = load_error(organ + "camera: {path: [{time: 1 s, position: [0, 0, 0], target: [0, 0, 0]}]}\n");
+  EXPECT_NE(e.message.find("camera.path"), std::string::npos) << e.message;
+
+  e = load_error(organ + "views:\n  - {organs: [hart]}\n");
+  EXPECT_NE(e.message.find("views[0].organs[0]"), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find("no organ is named 'hart'"), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find(":5:"), std::string::npos) << e.message;
 }
 
-TEST(SceneTiming, SlowMotionStretchesTheVideoNotTheSimulation) {
-  const Scene s = load(heart("{fps: 30, duration: 2 s, slow_motion: 4}"));
-  EXPECT_EQ(s.output.frame_count(), 240);  // 2 s of organ time over 8 s of video.
-  EXPECT_DOUBLE_EQ(s.output.frame_period_s(), 1.0 / 120);
-  EXPECT_NE(load_error(heart("{slow_motion: 0}")).message.find("output.slow_motion: 0 is outside [0.1, 100]"), std::string::npos);
-}
-
-TEST(SceneTiming, LoopSnapsToWholeBeatsAndSettlesInWholeLoops) {
-  const Scene s = load(heart("{fps: 30, duration: 2 s, loop: true, settle_cycles: 2}"));
-  // 2 s is 2.4 beats of 0.8333 s: two beats, 50 frames of exactly 1/30 s.
-  EXPECT_NEAR(s.output.duration_s, 2 / 1.2, 1e-12);
-  EXPECT_EQ(s.output.frame_count(), 50);
-  EXPECT_NEAR(s.output.frame_period_s(), 1.0 / 30, 1e-12);
-  EXPECT_EQ(s.output.start_frame, 50);  // Two beats of settling: one whole loop.
-  // A rhythm at 1.5x the slowest needs two slow cycles to close.
-  const Scene t = load(heart("{fps: 30, duration: 1 s, loop: true}", "", "108 bpm"));
-  EXPECT_NEAR(t.output.duration_s, 2 / 1.2, 1e-12);
-  // A rate that is no whole-number ratio has no common cycle.
-  EXPECT_NE(load_error(heart("{loop: true}", "", "77.7 bpm")).message.find("output.loop: the drives have no common cycle"),
-            std::string::npos);
-}
-
-TEST(SceneTiming, LoopNeedsSteadyRhythms) {
-  auto f = load_error(heart("{loop: true}", "", "72 bpm, irregularity: 0.2"));
-  EXPECT_NE(f.message.find("organs[0].regions[1].drive.irregularity: an irregular rhythm never repeats"), std::string::npos) << f.message;
-  f = load_error("organs:\n  - name: liver\n    mesh: {procedural: heart}\noutput: {loop: true}\n");
-  EXPECT_NE(f.message.find("output.loop: no region is driven"), std::string::npos) << f.message;
-  f = load_error("organs:\n  - name: heart\n    mesh: {procedural: heart}\n    regions:\n"
-                 "      - {name: left_ventricle, drive: {waveform: cardiac, rate: 72 bpm, amplitude: 0.1}}\n"
-                 "      - {name: aorta, pinned: true, motion: [{time: 0 s, position: [0, 0, 0]}, {time: 1 s, position: [0, 0.01, 0]}]}\n"
-                 "output: {loop: true}\n");
-  EXPECT_NE(f.message.find("organs[0].regions[1].motion: a prescribed motion is held after its last key"), std::string::npos) << f.message;
-  f = load_error(heart("{loop: true}", "interactions:\n  - poke: {organ: heart, at: [0, 0, 0.03], force: [0, 0, -1]}\n"));
-  EXPECT_NE(f.message.find("interactions[0]: happens once"), std::string::npos) << f.message;
-}
-
-TEST(SceneCards, CardsAndCaptionsAreRead) {
-  const Scene s = load(heart("{duration: 2 s}",
-                             "cards:\n  - {text: \"The heart\\nsinus rhythm\", duration: 2 s, fade: 0.4 s}\n"
-                             "captions:\n  - {text: Systole, from: 0.5 s, to: 1.5 s}\n"));
-  ASSERT_EQ(s.cards.size(), 1u);
-  EXPECT_EQ(s.cards[0].text, "The heart\nsinus rhythm");
-  EXPECT_DOUBLE_EQ(s.cards[0].fade_s, 0.4);
-  ASSERT_EQ(s.captions.size(), 1u);
-  EXPECT_DOUBLE_EQ(s.captions[0].from_s, 0.5);
-  EXPECT_DOUBLE_EQ(s.captions[0].to_s, 1.5);
-  EXPECT_DOUBLE_EQ(s.captions[0].fade_s, 0.3);
-}
-
-TEST(SceneCards, BadTimesSayWhy) {
-  auto f = load_error(heart("{duration: 2 s}", "captions:\n  - {text: Systole, from: 1.5 s, to: 0.5 s}\n"));
-  EXPECT_NE(f.message.find("scenes/test.yaml:9:"), std::string::npos) << f.message;
-  EXPECT_NE(f.message.find("captions[0].to: 0.5 s must be after from (1.5 s)"), std::string::npos) << f.message;
-  f = load_error(heart("{duration: 2 s}", "captions:\n  - {text: Systole, from: 0 s, to: 0.5 s, fade: 0.3 s}\n"));
-  EXPECT_NE(f.message.find("captions[0].fade: twice the fade (0.3 s) must fit"), std::string::npos) << f.message;
-  f = load_error(heart("{duration: 2 s}", "cards:\n  - {text: Title, duration: 1 s, fade: 0.6 s}\n"));
-  EXPECT_NE(f.message.find("cards[0].fade: twice the fade"), std::string::npos) << f.message;
-  f = load_error(heart("{duration: 2 s}", "captions:\n  - {from: 0 s, to: 1 s}\n"));
-  EXPECT_NE(f.message.find("missing required key 'text'"), std::string::npos) << f.message;
+TEST(TeachingVisuals, ViewRectanglesTileTheFrame) {
+  const auto two = view_rectangles(1280, 720, 2);
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_EQ(two[0].x, 0);
+  EXPECT_EQ(two[0].width, 640);
+  EXPECT_EQ(two[1].x, 640);
+  EXPECT_EQ(two[1].height, 720);
+  // One row up to three views, then a grid; no two views share a pixel, and a full grid
+  // covers the frame exactly.
+  for (const int n : {1, 2, 3, 4, 5, 7, 9, 16}) {
+    const auto rects = view_rectangles(322, 242, n);
+    ASSERT_EQ(rects.size(), static_cast<std::size_t>(n));
+    long area = 0;
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+      const PixelRect& r = rects[i];
+      EXPECT_GE(r.x, 0);
+      EXPECT_GE(r.y, 0);
+      EXPECT_LE(r.x + r.width, 322);
+      EXPECT_LE(r.y + r.height, 242);
+      area += static_cast<long>(r.width) * r.height;
+      for (std::size_t j = 0; j < i; ++j) {
+        const PixelRect& q = rects[j];
+        const bool apart = r.x >= q.x + q.width || q.x >= r.x + r.width || r.y >= q.y + q.height || q.y >= r.y + r.height;
+        EXPECT_TRUE(apart) << n << " views: " << i << " overlaps " << j;
+      }
+    }
+    if (n == 1 || n == 2 || n == 3 || n == 4 || n == 9 || n == 16) EXPECT_EQ(area, 322L * 242) << n;
+  }
+  EXPECT_EQ(view_rectangles(1280, 720, 4)[3].y, 360);
 }
 
 }  // namespace

@@ -91,24 +91,13 @@ Field heart_field(const HeartFrame& h) {
 
 OrganMesh heart(int detail) {
   const HeartFrame frame;
-  const Field field = heart_field(frame);
-  MesherSettings settings;
-  settings.center = kCenter;
-  settings.bound_radius = 0.15;
-  settings.target_triangles = target_triangles(detail);
-
-  OrganMesh mesh;
-  mesh.surface = mesh_implicit_surface(field, settings);
-  mesh.part_names.assign(kPartNames, kPartNames + kPartCount);
-  mesh.vertex_part.reserve(mesh.surface.positions.size());
   // The apex is the tip of the ventricles: the last stretch of the long axis.
   const double apex_from = 0.060;  // m from the base along the axis.
-  for (const Vec& x : mesh.surface.positions) {
-    int part = field.primitives[static_cast<size_t>(field.nearest_primitive(x))].part;
-    if ((part == kLeftVentricle || part == kRightVentricle) && (x - frame.base).dot(frame.axis) > apex_from) part = kApex;
-    mesh.vertex_part.push_back(part);
-  }
-  return mesh;
+  const auto apex_or_part = [&](const Vec& x, int part) -> int {
+    const bool ventricle = part == kLeftVentricle || part == kRightVentricle;
+    return ventricle && (x - frame.base).dot(frame.axis) > apex_from ? kApex : part;
+  };
+  return mesh_organ_surface(heart_field(frame), kCenter, 0.15, detail, kPartNames, apex_or_part);
 }
 
 }  // namespace systole::mesh::procedural

@@ -12,6 +12,8 @@
 // all measured on the surface. One thread, fixed order: deterministic.
 
 #include <Eigen/Core>
+#include <functional>
+#include <span>
 
 #include "mesh/mesh.h"
 #include "mesh/procedural/sdf.h"
@@ -28,5 +30,12 @@ struct MesherSettings {
 /// The surface where `field` is zero. The result has no parts; the caller assigns them.
 /// Throws Error(kInternal) if the field has no surface around `center`.
 TriangleMesh mesh_implicit_surface(const Field& field, const MesherSettings& settings);
+
+/// The tail the single-surface organs share: meshes `field` about `center` (within
+/// `bound_radius_m`) at `detail` (1..6), names the parts, and gives each vertex the part of
+/// its nearest primitive as `refine(x, part)` adjusts it (poles, lobes by side, the apex).
+OrganMesh mesh_organ_surface(const Field& field, const Eigen::Vector3d& center, double bound_radius_m, int detail,
+                             std::span<const char* const> part_names,
+                             const std::function<int(const Eigen::Vector3d& x, int part)>& refine);
 
 }  // namespace systole::mesh::procedural

@@ -60,27 +60,13 @@ Field kidney_field() {
 }  // namespace
 
 OrganMesh kidney(int detail) {
-  const Field field = kidney_field();
-  MesherSettings settings;
-  settings.center = kCenter;
-  settings.bound_radius = 0.1;
-  settings.target_triangles = target_triangles(detail);
-
-  OrganMesh mesh;
-  mesh.surface = mesh_implicit_surface(field, settings);
-  mesh.part_names.assign(kPartNames, kPartNames + kPartCount);
-  mesh.vertex_part.reserve(mesh.surface.positions.size());
   const Vec axis = long_axis();
   const double pole_from = 0.024;  // m from the centre along the long axis: the poles' cortex.
-  for (const Vec& x : mesh.surface.positions) {
-    int part = field.primitives[static_cast<size_t>(field.nearest_primitive(x))].part;
-    if (part != kHilum) {
-      const double along = (x - kCenter).dot(axis);
-      part = along > pole_from ? kUpperPole : along < -pole_from ? kLowerPole : kInterpolar;
-    }
-    mesh.vertex_part.push_back(part);
-  }
-  return mesh;
+  return mesh_organ_surface(kidney_field(), kCenter, 0.1, detail, kPartNames, [&](const Vec& x, int part) -> int {
+    if (part == kHilum) return part;
+    const double along = (x - kCenter).dot(axis);
+    return along > pole_from ? kUpperPole : along < -pole_from ? kLowerPole : kInterpolar;
+  });
 }
 
 }  // namespace systole::mesh::procedural

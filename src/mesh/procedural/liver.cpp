@@ -62,22 +62,10 @@ Field liver_field() {
 }  // namespace
 
 OrganMesh liver(int detail) {
-  const Field field = liver_field();
-  MesherSettings settings;
-  settings.center = kCenter;
-  settings.bound_radius = 0.2;
-  settings.target_triangles = target_triangles(detail);
-
-  OrganMesh mesh;
-  mesh.surface = mesh_implicit_surface(field, settings);
-  mesh.part_names.assign(kPartNames, kPartNames + kPartCount);
-  mesh.vertex_part.reserve(mesh.surface.positions.size());
-  for (const Vec& x : mesh.surface.positions) {
-    int part = field.primitives[static_cast<size_t>(field.nearest_primitive(x))].part;
-    if (part == kRightLobe || part == kLeftLobe) part = x.x() > kFalciformX ? kLeftLobe : kRightLobe;
-    mesh.vertex_part.push_back(part);
-  }
-  return mesh;
+  return mesh_organ_surface(liver_field(), kCenter, 0.2, detail, kPartNames, [](const Vec& x, int part) -> int {
+    if (part == kRightLobe || part == kLeftLobe) return x.x() > kFalciformX ? kLeftLobe : kRightLobe;
+    return part;
+  });
 }
 
 }  // namespace systole::mesh::procedural

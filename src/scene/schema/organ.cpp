@@ -1,0 +1,511 @@
+// The organ tables: mesh, transform, material, body, regions (selectors, drives), target.
+
+#include "scene/schema/parts.h"
+
+#include <filesystem>
+
+namespace systole::scene::schema {
+namespace {
+
+ValueSpec<Selector> selector_map() {
+  auto sphere = map<Selector>({
+      field("center", vec3(Dimension::kLength), &Selector::center,
+            "Centre, in organ space (after units and centring)."),
+      field("radius", quantity(Dimension::kLength, open_closed(0, 1000)), &Selector::radius_m, "Radius.").required(),
+  });
+  auto box = map<Selector>(
+      {
+          field("min", vec3(Dimension::kLength), &Selector::min, "Lowest corner, in organ space.").required(),
+          field("max", vec3(Dimension::kLength), &Selector::max, "Highest corner, in organ space.").required(),
+      },
+      [](const Node& node, Selector& s, const std::string& path, const Context&) {
+        if ((s.min.array() > s.max.array()).any())
+          fail(origin_of(node, "max"), join(path, "max"), "every coordinate of max must be >= that of min");
+      });
+  auto half_space = map<Selector>(
+      {
+          field("point", vec3(Dimension::kLength), &Selector::point, "A point on the boundary plane."),
+          field("normal", direction(), &Selector::normal, "Points into the selected side (normalised on reading).")
+              .required(),
+      },
+      [](const Node&, Selector& s, const std::string&, const Context&) { s.normal.normalize(); });
+
+  return map<Selector>(
+      {
+          field<Selector, std::string>(
+              "part", name_text(),
+              [](Selector& s) -> std::string& {
+                s.kind = SelectorKind::kPart;
+                return s.part;
+              },
+              "A named part: a procedural organ's anatomical part or a mesh file's sub-mesh.")
+              .shown_default("—"),
+          field<Selector, Selector>(
+              "sphere", sphere,
+              [](Selector& s) -> Selector& {
+                s.kind = SelectorKind::kSphere;
+                return s;
+              },
+              "Vertices within `radius` of `center`."),
+          field<Selector, Selector>(
+              "box", box,
+              [](Selector& s) -> Selector& {
+                s.kind = SelectorKind::kBox;
+                return s;
+              },
+              "Vertices inside the axis-aligned box."),
+          field<Selector, Selector>(
+              "half_space", half_space,
+              [](Selector& s) -> Selector& {
+                s.kind = SelectorKind::kHalfSpace;
+                return s;
+              },
+              "Vertices on the `normal` side of the plane through `point`."),
+      },
+      [](const Node& node, Selector& s, const std::string& path, const Context&) {
+        if (node.entries.size() != 1)
+          fail(node.origin, path,
+               "a selector has exactly one of part, sphere, box, half_space; got " +
+                   std::to_string(node.entries.size()) + " keys");
+        s.origin = node.origin;
+      });
+}
+
+/// `select`: "all", one selector map, or a list of them (their union).
+ValueSpec<std::vector<Selector>> selection() {
+  const ValueSpec<Selector> one = selector_map();
+  ValueSpec<std::vector<Selector>> spec;
+  spec.type = "selector or list";
+  spec.range = "`all`, a selector map, or a list of these";
+  spec.keys = one.keys;
+  auto read_one = [one](const Node& node, const std::string& path, const Context& ctx) {
+    Selector s;
+    if (node.kind == Node::Kind::kScalar && node.scalar == "all") {
+      s.origin = node.origin;
+      return s;
+    }
+    if (node.kind != Node::Kind::kMap)
+      fail(node.origin, path,
+           "expected \"all\" or a selector map (part, sphere, box or half_space); got " + node.describe());
+    one.read(node, s, path, ctx);
+    return s;
+  };
+  spec.read = [read_one](const Node& node, std::vector<Selector>& out, const std::string& path, const Context& ctx) {
+    out.clear();
+    if (node.kind == Node::Kind::kList) {
+      if (node.items.empty()) fail(node.origin, path, "expected at least one selector; got an empty list");
+      for (std::size_t i = 0; i < node.items.size(); ++i)
+        out.push_back(read_one(node.items[i], path + "[" + std::to_string(i) + "]", ctx));
+    } else {
+      out.push_back(read_one(node, path, ctx));
+    }
+  };
+  spec.show = [](const std::vector<Selector>&) { return std::string("the part named like the region"); };
+  return spec;
+}
+
+/// Two numbers [lo, hi] with lo < hi.
+ValueSpec<Eigen::Vector2d> value_pair() {
+  ValueSpec<Eigen::Vector2d> spec;
+  spec.type = "2 numbers";
+  spec.range = "[lo, hi], lo < hi";
+  spec.read = [](const Node& node, Eigen::Vector2d& out, const std::string& path, const Context&) {
+    if (node.kind != Node::Kind::kList || node.items.size() != 2)
+      fail(node.origin, path, "expected a list of 2 numbers [lo, hi]; got " + node.describe());
+    for (int i = 0; i < 2; ++i)
+      out[i] = parse_quantity(node.items[i], Dimension::kNumber, path + "[" + std::to_string(i) + "]");
+    if (!(out[0] < out[1]))
+      fail(node.origin, path, "expected lo < hi; got [" + format_number(out[0]) + ", " + format_number(out[1]) + "]");
+  };
+  spec.show = [](const Eigen::Vector2d& v) { return "[" + format_number(v[0]) + ", " + format_number(v[1]) + "]"; };
+  return spec;
+}
+
+ValueSpec<Region> region_spec() {
+  return map<Region>(
+      {
+          field("name", name_text(), &Region::name, "Unique within the organ; also the default part to select.")
+              .required(),
+          field("select", selection(), &Region::select,
+                "Which vertices belong to the region (a list is a union); later regions take vertices from earlier "
+                "ones."),
+          field("drive", drive_spec(), &Region::drive,
+                "The region's rhythm: L(t) = L0 (1 - amplitude phi(t - delay))."),
+          field("stiffness", number(open_closed(0, 1e6)), &Region::stiffness_scale, "Multiplies the body's stiffness."),
+          field("damping", number(closed(0, 1e6)), &Region::damping_scale, "Multiplies the body's damping."),
+          field("pinned", boolean(), &Region::pinned, "Fixed in place (valves, vessel stumps)."),
+          field("detail", choice<int>({{"1", 1}, {"2", 2}, {"4", 4}}), &Region::detail,
+                "Reduced model (`body.lattice`) only: the region's voxels are split into detail^3, so it keeps more "
+                "detail."),
+          field("motion", path_keys("Offset of the region from its rest position."), &Region::motion,
+                "Pinned regions: a prescribed motion (a kinematic region), smoothly interpolated, held after the last "
+                "key."),
+          field<Region, Color>(
+              "color", color(),
+              [](Region& r) -> Color& {
+                r.has_color = true;
+                return r.color;
+              },
+              "Colour of the region; else the organ's material colour.")
+              .shown_default("material color"),
+          field<Region, double>(
+              "opacity", number(closed(0, 1)),
+              [](Region& r) -> double& {
+                r.has_opacity = true;
+                return r.opacity;
+              },
+              "Opacity of the region; else the material's.")
+              .shown_default("material opacity"),
+      },
+      [](const Node& node, Region& r, const std::string& path, const Context&) {
+        r.origin = node.origin;
+        if (!r.motion.empty() && !r.pinned)
+          fail(origin_of(node, "motion"), join(path, "motion"),
+               "a prescribed motion needs pinned: true (the region is moved, not simulated)");
+      });
+}
+
+ValueSpec<MeshSource> mesh_spec() {
+  return map<MeshSource>(
+      {
+          field("file", path_text(), &MeshSource::file,
+                "Mesh file (OBJ, STL, PLY, glTF, ...), relative to the scene's folder."),
+          field("procedural", name_text(), &MeshSource::procedural, "A generated organ, e.g. `heart`."),
+          field("detail", whole<int>(1, 6), &MeshSource::detail,
+                "`procedural` only: level of detail, 1 (coarse) to 6 (fine)."),
+          field("units", choice<double>({{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}}), &MeshSource::unit_m,
+                "`file` only: the file's length unit."),
+          field("center", boolean(), &MeshSource::center, "Move the mesh's bounding-box centre to the origin."),
+      },
+      [](const Node& node, MeshSource& m, const std::string& path, const Context& ctx) {
+        m.origin = node.origin;
+        const bool has_file = node.find("file") != nullptr, has_procedural = node.find("procedural") != nullptr;
+        if (has_file == has_procedural)
+          fail(node.origin, path,
+               std::string("expected exactly one of file, procedural; got ") + (has_file ? "both" : "neither"));
+        if (has_file && node.find("detail"))
+          fail(origin_of(node, "detail"), join(path, "detail"), "applies only to a procedural mesh");
+        if (has_procedural && node.find("units"))
+          fail(origin_of(node, "units"), join(path, "units"), "applies only to a mesh file");
+        if (has_file) {
+          const std::filesystem::path file =
+              std::filesystem::path(m.file).is_absolute() ? std::filesystem::path(m.file) : ctx.base_dir / m.file;
+          std::error_code ec;
+          if (!std::filesystem::is_regular_file(file, ec))
+            throw Error(ExitCode::kNoInput,
+                        where(origin_of(node, "file")) + join(path, "file") + ": " +
+                            (std::filesystem::exists(file, ec) ? "not a regular file" : "mesh file not found") + ": " +
+                            file.lexically_normal().string());
+          m.file = file.lexically_normal().string();
+        }
+      });
+}
+
+/// `target`: the motion `systole tune` fits the organ's regions to (train/).
+ValueSpec<Target> target_spec() {
+  auto frame = map<TargetFrame>(
+      {
+          field("file", path_text(), &TargetFrame::file,
+                "Mesh file with the organ's vertices in the same order, in the organ mesh's units and frame.")
+              .required(),
+          field("time", quantity(Dimension::kTime, closed(0, 3600)), &TargetFrame::time_s,
+                "Time of this key within the period.")
+              .required(),
+      },
+      [](const Node& node, TargetFrame& f, const std::string& path, const Context& ctx) {
+        const std::filesystem::path file =
+            std::filesystem::path(f.file).is_absolute() ? std::filesystem::path(f.file) : ctx.base_dir / f.file;
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(file, ec))
+          throw Error(ExitCode::kNoInput, where(origin_of(node, "file")) + join(path, "file") +
+                                              ": key-frame file not found: " + file.lexically_normal().string());
+        f.file = file.lexically_normal().string();
+      });
+  auto samples = list(number(open_closed(0, 10)), 2, 1024, "list of numbers");
+  auto curve = map<TargetCurve>(
+      {
+          field("region", name_text(), &TargetCurve::region, "The region whose size the curve gives.").required(),
+          field("scale", samples, &TargetCurve::samples,
+                "Linear size relative to rest over one period, evenly spaced."),
+          field<TargetCurve, std::vector<double>>(
+              "volume", samples,
+              [](TargetCurve& c) -> std::vector<double>& {
+                c.volume = true;
+                return c.samples;
+              },
+              "Volume relative to rest over one period, evenly spaced (a ventricular volume curve)."),
+      },
+      [](const Node& node, TargetCurve& c, const std::string& path, const Context&) {
+        c.origin = node.origin;
+        if ((node.find("scale") != nullptr) == (node.find("volume") != nullptr))
+          fail(node.origin, path, "a curve has exactly one of scale, volume");
+      });
+  return map<Target>(
+      {
+          field("rate", quantity(Dimension::kFrequency, open_closed(0, 20)), &Target::rate_hz,
+                "Cycles per unit time of the target; the tuned drives run at it.")
+              .required(),
+          field("frames", list(frame, 2, 4096, "list of key frames"), &Target::frames,
+                "Key-frame meshes at times within one period, interpolated smoothly and periodically."),
+          field("curves", list(curve, 1, 256, "list of curves"), &Target::curves,
+                "Per-region size curves over one period (instead of frames)."),
+          field("animation", path_text(), &Target::animation,
+                "An animated mesh file (glTF/GLB, FBX, Collada...) of the organ's own mesh: its first animation (morph "
+                "targets and/or skinning) is one period."),
+          field("samples", whole<int>(4, 1024), &Target::animation_samples,
+                "Poses sampled evenly from the animation over one period."),
+          field("coupling", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Target::coupling_N_per_m,
+                "Stiffness tying each particle to its target while the driving forces are recorded."),
+          field("harmonics", whole<int>(1, 16), &Target::harmonics, "Fourier harmonics of each fitted drive."),
+          field("lock", list(path_text(), 0, 1024, "list of names"), &Target::lock,
+                "Parameters the tuner keeps as the scene writes them: `amplitude`, `shape`, `delay`, `stiffness` (all "
+                "regions), a region's name (all its parameters), or `region.param`."),
+          field("budget", whole<int>(0, 1000000), &Target::budget, "Playbacks the tuner may run (0: fit only)."),
+          field("settle", number(closed(0, 100)), &Target::settle_cycles, "Cycles run before the error is measured."),
+          field("measure", number(open_closed(0, 100)), &Target::measure_cycles,
+                "Cycles over which the error is measured."),
+      },
+      [](const Node& node, Target& t, const std::string& path, const Context& ctx) {
+        t.enabled = true;
+        t.origin = node.origin;
+        if (int(!t.frames.empty()) + int(!t.curves.empty()) + int(!t.animation.empty()) != 1)
+          fail(node.origin, path, "expected exactly one of frames, curves, animation");
+        if (node.find("samples") != nullptr && t.animation.empty())
+          fail(origin_of(node, "samples"), join(path, "samples"), "applies to an animation only");
+        if (!t.animation.empty()) {
+          const std::filesystem::path file = std::filesystem::path(t.animation).is_absolute()
+                                                 ? std::filesystem::path(t.animation)
+                                                 : ctx.base_dir / t.animation;
+          std::error_code ec;
+          if (!std::filesystem::is_regular_file(file, ec))
+            throw Error(ExitCode::kNoInput, where(origin_of(node, "animation")) + join(path, "animation") +
+                                                ": animation file not found: " + file.lexically_normal().string());
+          t.animation = file.lexically_normal().string();
+        }
+        const double period_s = 1.0 / t.rate_hz;
+        for (std::size_t i = 0; i < t.frames.size(); ++i) {
+          const Origin& at = node.find("frames")->items[i].origin;
+          if (i > 0 && t.frames[i].time_s <= t.frames[i - 1].time_s)
+            fail(at, path + ".frames[" + std::to_string(i) + "].time", "times must increase");
+          if (t.frames[i].time_s >= period_s)
+            fail(at, path + ".frames[" + std::to_string(i) + "].time",
+                 "must lie within one period (" + format_quantity(period_s, Dimension::kTime) + " at this rate)");
+        }
+      });
+}
+
+/// The target's region names and lock entries must name the organ's regions.
+void check_target_names(const Node& node, const Organ& o, const std::string& path) {
+  if (!o.target.enabled) return;
+  const Node& target = *node.find("target");
+  auto region = [&](const std::string& name) {
+    return std::find_if(o.regions.begin(), o.regions.end(), [&](const Region& r) { return r.name == name; });
+  };
+  for (std::size_t i = 0; i < o.target.curves.size(); ++i) {
+    const TargetCurve& c = o.target.curves[i];
+    const auto r = region(c.region);
+    if (r == o.regions.end())
+      fail(c.origin, path + ".target.curves[" + std::to_string(i) + "].region",
+           "the organ has no region '" + c.region + "'");
+    if (r->pinned)
+      fail(c.origin, path + ".target.curves[" + std::to_string(i) + "].region",
+           "region '" + c.region + "' is pinned: it cannot follow a curve");
+  }
+  const std::vector<std::string> params = {"amplitude", "shape", "delay", "stiffness"};
+  for (std::size_t i = 0; i < o.target.lock.size(); ++i) {
+    const std::string& entry = o.target.lock[i];
+    const std::size_t dot = entry.find('.');
+    const std::string head = entry.substr(0, dot), param = dot == std::string::npos ? "" : entry.substr(dot + 1);
+    const bool is_param = std::find(params.begin(), params.end(), head) != params.end() && dot == std::string::npos;
+    const bool good = is_param || (region(head) != o.regions.end() &&
+                                   (param.empty() || std::find(params.begin(), params.end(), param) != params.end()));
+    if (!good)
+      fail(target.find("lock")->items[i].origin, path + ".target.lock[" + std::to_string(i) + "]",
+           "expected amplitude, shape, delay, stiffness, a region's name, or region.param with one of those; got '" +
+               entry + "'");
+  }
+}
+
+}  // namespace
+
+ValueSpec<Drive> drive_spec() {
+  auto harmonic = map<Harmonic>({
+      field("amplitude", number(closed(0, 0.5)), &Harmonic::amplitude, "Weight of this harmonic in phi."),
+      field("phase", quantity(Dimension::kAngle, any()), &Harmonic::phase_rad, "Phase of this harmonic."),
+  });
+  auto rate = quantity(Dimension::kFrequency, closed(0, 20));
+  return map<Drive>(
+      {
+          field("waveform",
+                choice<Waveform>({{"none", Waveform::kNone},
+                                  {"sine", Waveform::kSine},
+                                  {"fourier", Waveform::kFourier},
+                                  {"cardiac", Waveform::kCardiac},
+                                  {"breathing", Waveform::kBreathing},
+                                  {"samples", Waveform::kSamples}}),
+                &Drive::waveform, "Shape of phi(t) over one period; `none` leaves the region passive."),
+          field("rate", rate, &Drive::rate_hz, "Cycles per unit time at the start of the clip (72 bpm = 1.2 Hz)."),
+          field("rate_end", rate, &Drive::rate_end_hz, "When > 0, the rate ramps linearly to this by the clip's end."),
+          field("amplitude", number(closed(0, 0.95)), &Drive::amplitude, "Fraction of rest length removed at phi = 1."),
+          field("phase", quantity(Dimension::kAngle, any()), &Drive::phase_rad, "Phase offset of the cycle."),
+          field("delay", quantity(Dimension::kTime, closed(0, 60)), &Drive::delay_s,
+                "Activation delay (atria before ventricles)."),
+          field("systolic_fraction", number(open(0.05, 0.95)), &Drive::systolic_fraction,
+                "`cardiac`: part of the period spent contracting."),
+          field("inhale_fraction", number(open(0.05, 0.95)), &Drive::inhale_fraction,
+                "`breathing`: part of the period spent inhaling."),
+          field("harmonics", list(harmonic, 0, 32, "list of harmonics"), &Drive::harmonics,
+                "`fourier`: harmonic k = 1, 2, ... as {amplitude, phase}; amplitudes sum to at most 0.5."),
+          field("samples", list(number(closed(0, 1)), 2, 1024, "list of numbers"), &Drive::samples,
+                "`samples`: phi over one period, evenly spaced, interpolated periodically."),
+          field("irregularity", number(closed(0, 0.5)), &Drive::irregularity,
+                "Seeded beat-to-beat jitter of the period (0 = regular)."),
+      },
+      [](const Node& node, Drive& d, const std::string& path, const Context&) {
+        if (d.waveform == Waveform::kNone) return;
+        if (d.rate_hz <= 0)
+          fail(origin_of(node, "rate"), join(path, "rate"),
+               "a driven region (waveform other than none) needs a rate > 0, e.g. \"72 bpm\"");
+        if (d.waveform == Waveform::kFourier && d.harmonics.empty())
+          fail(origin_of(node, "harmonics"), join(path, "harmonics"), "waveform fourier needs at least one harmonic");
+        if (d.waveform == Waveform::kSamples && d.samples.empty())
+          fail(origin_of(node, "samples"), join(path, "samples"), "waveform samples needs a list of 2..1024 samples");
+        // phi = 1/2 + sum a_k cos(...) stays in [0, 1] only if the amplitudes sum to <= 1/2.
+        double sum = 0;
+        for (const Harmonic& h : d.harmonics) sum += h.amplitude;
+        if (sum > 0.5 + 1e-12)
+          fail(origin_of(node, "harmonics"), join(path, "harmonics"),
+               "harmonic amplitudes sum to " + format_number(sum) + "; at most 0.5 keeps phi within [0, 1]");
+      });
+}
+
+/// A list of {time, position} keys with increasing times.
+ValueSpec<std::vector<PathKey>> path_keys(std::string position_doc) {
+  auto key = map<PathKey>({
+      field("time", quantity(Dimension::kTime, closed(0, 3600)), &PathKey::time_s, "When the point is here.")
+          .required(),
+      field("position", vec3(Dimension::kLength), &PathKey::position_m, std::move(position_doc)).required(),
+  });
+  return list(key, 1, 1024, "list of path keys")
+      .also(
+          [](const std::vector<PathKey>& keys) {
+            for (std::size_t i = 1; i < keys.size(); ++i)
+              if (keys[i].time_s <= keys[i - 1].time_s) return "times must increase (key " + std::to_string(i) + ")";
+            return std::string();
+          },
+          "1..1024 keys, times increasing");
+}
+
+ValueSpec<ClipPlane> clip_spec() {
+  return map<ClipPlane>(
+      {
+          field("point", vec3(Dimension::kLength), &ClipPlane::point_m, "A point on the cutting plane (world space)."),
+          field("normal", direction(), &ClipPlane::normal,
+                "Points to the side kept; the other side is cut away (normalised on reading).")
+              .required(),
+          field("cut_color", color(), &ClipPlane::cut_color, "Flat colour of the inside seen through the cut (sRGB)."),
+      },
+      [](const Node&, ClipPlane& c, const std::string&, const Context&) {
+        c.enabled = true;
+        c.normal.normalize();
+      });
+}
+
+namespace {
+
+ValueSpec<Transform> transform_spec() {
+  return map<Transform>({
+      field("translate", vec3(Dimension::kLength), &Transform::translate_m, "Position of the organ."),
+      field("rotate", vec3(Dimension::kAngle), &Transform::rotate_rad, "Euler angles, applied X, then Y, then Z."),
+      field("scale", number(open_closed(0, 1000)), &Transform::scale, "Uniform scale, applied before rotation."),
+  });
+}
+
+ValueSpec<Material> material_spec() {
+  return map<Material>({
+      field("color", color(), &Material::color, "Surface colour (sRGB)."),
+      field("specular", number(closed(0, 1)), &Material::specular, "Strength of the highlight."),
+      field("shininess", number(closed(1, 1000)), &Material::shininess,
+            "Blinn-Phong exponent: larger is a tighter highlight."),
+      field("opacity", number(closed(0, 1)), &Material::opacity,
+            "1 opaque; below 1 the organ is see-through (order-independent transparency, "
+            "docs/teaching-visuals.md)."),
+  });
+}
+
+ValueSpec<Body> body_spec() {
+  return map<Body>({
+      field("mass", quantity(Dimension::kMass, open_closed(0, 1000)), &Body::mass_kg,
+            "Total mass, spread over vertices by area."),
+      field("stiffness", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Body::stiffness_N_per_m,
+            "Spring stiffness of each surface edge."),
+      field("damping", quantity(Dimension::kTime, closed(0, 1)), &Body::damping_s,
+            "Stiffness-proportional damping time (c = k damping)."),
+      field("volume_stiffness", quantity(Dimension::kPressure, closed(0, 1e9)), &Body::volume_stiffness_Pa,
+            "Bulk modulus of the enclosed volume; 0 = no volume constraint."),
+      field("drag", quantity(Dimension::kRate, closed(0, 1000)), &Body::drag_per_s,
+            "Velocity damping towards rest (the surrounding tissue)."),
+      field("bending", quantity(Dimension::kStiffness, closed(0, 1e9)), &Body::bending_N_per_m,
+            "Stiffness of the springs across each edge, which resist folding; 0 = none."),
+      field("lattice", whole<int>(0, 64), &Body::lattice,
+            "Reduced model: voxels along the organ's longest side; their corners carry the motion and "
+            "the mesh follows (docs/accuracy.md). 0 = full model, every vertex a particle."),
+      field("volume_drive", drive_spec(), &Body::volume_drive,
+            "Drives the rest volume instead of rest lengths: V0(t) = V0 (1 + amplitude phi(t - delay)), "
+            "`amplitude` the fraction of volume added (lungs inflating). Needs `volume_stiffness` > 0 "
+            "and a closed surface."),
+  });
+}
+
+}  // namespace
+
+ValueSpec<Organ> organ_spec() {
+  return map<Organ>(
+      {
+          field("name", name_text(), &Organ::name, "Unique name; -D paths may use it (organs.heart.body.mass).")
+              .required(),
+          field("mesh", mesh_spec(), &Organ::mesh,
+                "Where the surface comes from: exactly one of `file` or `procedural`.")
+              .required(),
+          field("transform", transform_spec(), &Organ::transform,
+                "Placement in the world, applied after units and centring."),
+          field("material", material_spec(), &Organ::material, "How the surface looks."),
+          field("color_by",
+                choice<ColorBy>({{"material", ColorBy::kMaterial},
+                                 {"region", ColorBy::kRegion},
+                                 {"strain", ColorBy::kStrain},
+                                 {"activation", ColorBy::kActivation}}),
+                &Organ::color_by,
+                "What the surface colour shows: `material` (region colours where set), `region` (every region a "
+                "colour: its own or a palette's), `strain` (mean (L - L0) / L0 of each vertex's edges, blue shortened, "
+                "red stretched), `activation` (the region's drive phi(t), dark to yellow)."),
+          field<Organ, Eigen::Vector2d>(
+              "color_range", value_pair(),
+              [](Organ& o) -> Eigen::Vector2d& {
+                o.has_color_range = true;
+                return o.color_range;
+              },
+              "`strain`, `activation`: the values at the two ends of the colour map.")
+              .shown_default("strain [-0.15, 0.15]; activation [0, 1]"),
+          field("clip", clip_spec(), &Organ::clip, "Cuts the organ open along a plane.").shown_default("none"),
+          field("body", body_spec(), &Organ::body, "The soft body's physical parameters."),
+          field("regions", list(region_spec(), 0, 256, "list of regions"), &Organ::regions,
+                "Parts with their own rhythm and stiffness, applied in order."),
+          field("target", target_spec(), &Organ::target,
+                "Motion for `systole tune` to fit the regions' drives to (docs/training.md).")
+              .shown_default("none"),
+      },
+      [](const Node& node, Organ& o, const std::string& path, const Context&) {
+        o.origin = node.origin;
+        check_target_names(node, o, path);
+        if (!o.has_color_range)
+          o.color_range = o.color_by == ColorBy::kActivation ? Eigen::Vector2d(0, 1) : Eigen::Vector2d(-0.15, 0.15);
+        for (std::size_t i = 0; i < o.regions.size(); ++i)
+          for (std::size_t j = 0; j < i; ++j)
+            if (o.regions[i].name == o.regions[j].name)
+              fail(origin_of(node.find("regions")->items[i], "name"), path + ".regions[" + std::to_string(i) + "].name",
+                   "duplicate region name '" + o.regions[i].name + "' (also regions[" + std::to_string(j) + "])");
+      });
+}
+
+}  // namespace systole::scene::schema
