@@ -18,6 +18,7 @@
 
 #include "clip/bake.h"
 #include "clip/frame_list.h"
+#include "clip/video_format.h"
 #include "scene/content_hash.h"
 #include "common/json.h"
 #include "batch/manifest.h"

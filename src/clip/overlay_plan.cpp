@@ -69,6 +69,62 @@ std::vector<double> beat_onsets_s(const sim::Drive& d, const std::vector<double>
   return out;
 }
 
+/// A region's beat boundaries (sim::Model::beat_boundaries); empty (regular beats) when it has none.
+const std::vector<double>& beats_of(const sim::Model& model, int region) {
+  static const std::vector<double> regular;
+  return region >= 0 && static_cast<std::size_t>(region) < model.beat_boundaries.size()
+             ? model.beat_boundaries[static_cast<std::size_t>(region)]
+             : regular;
+}
+
+/// Activation phi(t) of the trace's region at kSignalRateHz; trace.values has the sample count.
+void fill_activation_trace(const scene::Organ& organ, const sim::Model& model, const scene::TraceOverlay& t,
+                           overlay::Trace& trace) {
+  const int r = region_index(organ, t.region);
+  const auto& drive = model.regions[static_cast<std::size_t>(r)].drive;
+  const auto& beats = beats_of(model, r);
+  trace.title = "activation: " + spaced(t.region);
+  trace.color = {255, 196, 90};
+  trace.min = -0.05;
+  trace.max = 1.05;
+  for (std::size_t i = 0; i < trace.values.size(); ++i)
+    trace.values[i] = sim::activation(drive, double(i) / kSignalRateHz, model.ramp_s, beats);
+}
+
+/// A synthetic ECG at kSignalRateHz: an R wave before each beat of the trace's region, P waves
+/// (or f-waves) from the atrial region's; trace.values has the sample count.
+void fill_ecg_trace(const scene::Organ& organ, const sim::Model& model, const scene::TraceOverlay& t, double clip_s,
+                    overlay::Trace& trace) {
+  const int r = region_index(organ, t.region);
+  const auto& drive = model.regions[static_cast<std::size_t>(r)].drive;
+  const auto& beats = beats_of(model, r);
+  trace.title = "ECG (synthetic): beats of " + spaced(t.region);
+  trace.color = {120, 230, 150};
+  trace.min = -0.45;
+  trace.max = 1.15;
+  std::vector<double> r_times = beat_onsets_s(drive, beats, model.ramp_s, clip_s);
+  for (double& r_time : r_times) r_time -= kElectromechanicalDelayS;
+  // P waves: from the atrial region's beats when one is named, each depolarisation the
+  // same delay before the contraction it triggers; atria faster than any sinus rhythm
+  // fibrillate or flutter: no P waves, but f-waves following their drive.
+  const int a = t.atria.empty() ? -1 : region_index(organ, t.atria);
+  const sim::Drive* atria = a >= 0 ? &model.regions[static_cast<std::size_t>(a)].drive : nullptr;
+  const auto& atrial_beats = beats_of(model, a);
+  const bool fibrillating = atria && atria->rate_hz > kFibrillationHz;
+  std::vector<double> p_times;
+  if (atria && !fibrillating) {
+    p_times = beat_onsets_s(*atria, atrial_beats, model.ramp_s, clip_s);
+    for (double& p_time : p_times) p_time -= kElectromechanicalDelayS;
+  }
+  for (std::size_t i = 0; i < trace.values.size(); ++i) {
+    const double time = double(i) / kSignalRateHz;
+    trace.values[i] = overlay::ecg_value(time, r_times, atria ? &p_times : nullptr);
+    if (fibrillating) {
+      trace.values[i] += kFibrillationMv * (2 * sim::activation(*atria, time, model.ramp_s, atrial_beats) - 1);
+    }
+  }
+}
+
 }  // namespace
 
 OverlayPlan::~OverlayPlan() = default;
@@ -77,6 +133,18 @@ OverlayPlan::OverlayPlan(const scene::Scene& scene, const world::World& world) :
   width_ = scene.output.width;
   height_ = scene.output.height;
   fps_ = scene.output.fps;
+  plan_views(scene);
+  const bool titled = std::any_of(views_.begin(), views_.end(), [](const ViewFrame& v) { return !v.title.empty(); });
+  empty_ = spec_.empty() && !titled;
+  if (empty_) return;
+  volume_mL_.resize(world.organs.size());
+  triangles_.resize(world.organs.size());
+  if (spec_.labels.enabled) plan_labels(scene, world);
+  if (spec_.legend.enabled) plan_legend(scene, world);
+  for (const auto& t : spec_.traces) plan_trace(scene, world, t);
+}
+
+void OverlayPlan::plan_views(const scene::Scene& scene) {
   // The views labels are placed in and titled: the scene's, as the renderer lays them out.
   if (scene.views.empty()) {
     views_.push_back({scene.camera, {0, 0, width_, height_}, ""});
@@ -87,9 +155,9 @@ OverlayPlan::OverlayPlan(const scene::Scene& scene, const world::World& world) :
       views_.push_back({view.has_camera ? view.camera : scene.camera, rects[v], view.title});
     }
   }
-  const bool titled = std::any_of(views_.begin(), views_.end(), [](const ViewFrame& v) { return !v.title.empty(); });
-  empty_ = spec_.empty() && !titled;
-  if (empty_) return;
+}
+
+void OverlayPlan::plan_labels(const scene::Scene& scene, const world::World& world) {
   auto view_of = [&](const std::string& organ) {
     for (std::size_t v = 0; v < scene.views.size(); ++v) {
       const auto& names = scene.views[v].organs;
@@ -97,118 +165,81 @@ OverlayPlan::OverlayPlan(const scene::Scene& scene, const world::World& world) :
     }
     return scene.views.empty() ? 0 : -1;
   };
+  for (std::size_t o = 0; o < scene.organs.size(); ++o) {
+    const auto& organ = scene.organs[o];
+    if (!spec_.labels.organ.empty() && spec_.labels.organ != organ.name) continue;
+    const int view = view_of(organ.name);
+    if (view < 0) continue;  // In no view: nowhere to label it.
+    const auto& vertex_region = world.organs[o].geometry.vertex_region;
+    for (std::size_t r = 0; r < organ.regions.size(); ++r) {
+      const auto& wanted = spec_.labels.regions;
+      if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), organ.regions[r].name) == wanted.end()) continue;
+      LabelTarget t{static_cast<int>(o), view, spaced(organ.regions[r].name), {}};
+      for (std::size_t v = 0; v < vertex_region.size(); ++v)
+        if (vertex_region[v] == static_cast<int>(r)) t.vertices.push_back(static_cast<int>(v));
+      if (!t.vertices.empty()) targets_.push_back(std::move(t));  // A region a later one took whole has no place.
+    }
+  }
+}
+
+void OverlayPlan::plan_legend(const scene::Scene& scene, const world::World& world) {
+  const int o = organ_index(scene, spec_.legend.organ);
+  const auto& organ = scene.organs[static_cast<std::size_t>(o)];
+  bool body_shows = false;  // Some vertex keeps the organ's own colour.
+  for (int r : world.organs[static_cast<std::size_t>(o)].geometry.vertex_region)
+    body_shows = body_shows || r < 0 || !organ.regions[static_cast<std::size_t>(r)].has_color;
+  const render::OrganColorMap scalar = render::organ_color_map(organ);
+  if (scalar.has) {
+    // Coloured by strain or activation: the key is a colour bar of the renderer's own map.
+    const render::ColorMap& map = scalar.map;
+    color_bar_.label = map.quantity;
+    color_bar_.min = map.lo;
+    color_bar_.max = map.hi;
+    for (int k = 0; k <= 32; ++k) color_bar_.colors.push_back(to_rgb(map.at(map.lo + (map.hi - map.lo) * k / 32.0)));
+  } else if (organ.color_by == scene::ColorBy::kRegion) {
+    for (const render::RegionSwatch& swatch : render::region_legend(organ)) {
+      legend_.push_back({spaced(swatch.name), to_rgb(swatch.color)});
+    }
+  } else {
+    for (const auto& region : organ.regions)
+      if (region.has_color) legend_.push_back({spaced(region.name), to_rgb(region.color)});
+    if (body_shows) legend_.push_back({spaced(organ.name), to_rgb(organ.material.color)});
+  }
+}
+
+void OverlayPlan::plan_trace(const scene::Scene& scene, const world::World& world, const scene::TraceOverlay& t) {
   const double clip_s = scene.output.duration_s;
-  volume_mL_.resize(world.organs.size());
-  triangles_.resize(world.organs.size());
-
-  if (spec_.labels.enabled) {
-    for (std::size_t o = 0; o < scene.organs.size(); ++o) {
-      const auto& organ = scene.organs[o];
-      if (!spec_.labels.organ.empty() && spec_.labels.organ != organ.name) continue;
-      const int view = view_of(organ.name);
-      if (view < 0) continue;  // In no view: nowhere to label it.
-      const auto& vertex_region = world.organs[o].geometry.vertex_region;
-      for (std::size_t r = 0; r < organ.regions.size(); ++r) {
-        const auto& wanted = spec_.labels.regions;
-        if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), organ.regions[r].name) == wanted.end()) continue;
-        LabelTarget t{static_cast<int>(o), view, spaced(organ.regions[r].name), {}};
-        for (std::size_t v = 0; v < vertex_region.size(); ++v)
-          if (vertex_region[v] == static_cast<int>(r)) t.vertices.push_back(static_cast<int>(v));
-        if (!t.vertices.empty()) targets_.push_back(std::move(t));  // A region a later one took whole has no place.
-      }
+  const int o = organ_index(scene, t.organ);
+  const auto& organ = scene.organs[static_cast<std::size_t>(o)];
+  overlay::Trace trace;
+  trace.window_s = t.window_s > 0 ? t.window_s : clip_s;
+  trace.clip_s = clip_s;
+  int volume_organ = -1;
+  if (t.signal == scene::TraceSignal::kVolume) {
+    volume_organ = o;
+    trace.title = "volume: " + spaced(organ.name);
+    trace.unit = "mL";
+    trace.color = {120, 200, 255};
+    trace.sample_dt_s = 1.0 / fps_;
+    if (std::find(volume_organs_.begin(), volume_organs_.end(), o) == volume_organs_.end()) {
+      volume_organs_.push_back(o);
+      volume_mL_[static_cast<std::size_t>(o)].assign(static_cast<std::size_t>(scene.output.frame_count()), kNaN);
+      const auto& surface = world.organs[static_cast<std::size_t>(o)].geometry.mesh.surface;
+      triangles_[static_cast<std::size_t>(o)] = surface.triangles;
     }
-  }
-
-  if (spec_.legend.enabled) {
-    const int o = organ_index(scene, spec_.legend.organ);
-    const auto& organ = scene.organs[static_cast<std::size_t>(o)];
-    bool body_shows = false;  // Some vertex keeps the organ's own colour.
-    for (int r : world.organs[static_cast<std::size_t>(o)].geometry.vertex_region)
-      body_shows = body_shows || r < 0 || !organ.regions[static_cast<std::size_t>(r)].has_color;
-    const render::OrganColorMap scalar = render::organ_color_map(organ);
-    if (scalar.has) {
-      // Coloured by strain or activation: the key is a colour bar of the renderer's own map.
-      const render::ColorMap& map = scalar.map;
-      color_bar_.label = map.quantity;
-      color_bar_.min = map.lo;
-      color_bar_.max = map.hi;
-      for (int k = 0; k <= 32; ++k) color_bar_.colors.push_back(to_rgb(map.at(map.lo + (map.hi - map.lo) * k / 32.0)));
-    } else if (organ.color_by == scene::ColorBy::kRegion) {
-      for (const render::RegionSwatch& swatch : render::region_legend(organ)) legend_.push_back({spaced(swatch.name), to_rgb(swatch.color)});
+  } else {
+    const auto n = static_cast<std::size_t>(std::ceil(clip_s * kSignalRateHz)) + 1;
+    trace.sample_dt_s = 1.0 / kSignalRateHz;
+    trace.values.resize(n);
+    const auto& model = world.organs[static_cast<std::size_t>(o)].model;
+    if (t.signal == scene::TraceSignal::kActivation) {
+      fill_activation_trace(organ, model, t, trace);
     } else {
-      for (const auto& region : organ.regions)
-        if (region.has_color) legend_.push_back({spaced(region.name), to_rgb(region.color)});
-      if (body_shows) legend_.push_back({spaced(organ.name), to_rgb(organ.material.color)});
+      fill_ecg_trace(organ, model, t, clip_s, trace);
     }
   }
-
-  for (const auto& t : spec_.traces) {
-    const int o = organ_index(scene, t.organ);
-    const auto& organ = scene.organs[static_cast<std::size_t>(o)];
-    overlay::Trace trace;
-    trace.window_s = t.window_s > 0 ? t.window_s : clip_s;
-    trace.clip_s = clip_s;
-    int volume_organ = -1;
-    if (t.signal == scene::TraceSignal::kVolume) {
-      volume_organ = o;
-      trace.title = "volume: " + spaced(organ.name);
-      trace.unit = "mL";
-      trace.color = {120, 200, 255};
-      trace.sample_dt_s = 1.0 / fps_;
-      if (std::find(volume_organs_.begin(), volume_organs_.end(), o) == volume_organs_.end()) {
-        volume_organs_.push_back(o);
-        volume_mL_[static_cast<std::size_t>(o)].assign(static_cast<std::size_t>(scene.output.frame_count()), kNaN);
-        triangles_[static_cast<std::size_t>(o)] = world.organs[static_cast<std::size_t>(o)].geometry.mesh.surface.triangles;
-      }
-    } else {
-      const int r = region_index(organ, t.region);
-      const auto& model = world.organs[static_cast<std::size_t>(o)].model;
-      const auto& drive = model.regions[static_cast<std::size_t>(r)].drive;
-      static const std::vector<double> regular;
-      const auto& beats = static_cast<std::size_t>(r) < model.beat_boundaries.size()
-                              ? model.beat_boundaries[static_cast<std::size_t>(r)]
-                              : regular;
-      const auto n = static_cast<std::size_t>(std::ceil(clip_s * kSignalRateHz)) + 1;
-      trace.sample_dt_s = 1.0 / kSignalRateHz;
-      trace.values.resize(n);
-      if (t.signal == scene::TraceSignal::kActivation) {
-        trace.title = "activation: " + spaced(t.region);
-        trace.color = {255, 196, 90};
-        trace.min = -0.05;
-        trace.max = 1.05;
-        for (std::size_t i = 0; i < n; ++i)
-          trace.values[i] = sim::activation(drive, double(i) / kSignalRateHz, model.ramp_s, beats);
-      } else {
-        trace.title = "ECG (synthetic): beats of " + spaced(t.region);
-        trace.color = {120, 230, 150};
-        trace.min = -0.45;
-        trace.max = 1.15;
-        std::vector<double> r_times = beat_onsets_s(drive, beats, model.ramp_s, clip_s);
-        for (double& r_time : r_times) r_time -= kElectromechanicalDelayS;
-        // P waves: from the atrial region's beats when one is named, each depolarisation the
-        // same delay before the contraction it triggers; atria faster than any sinus rhythm
-        // fibrillate or flutter: no P waves, but f-waves following their drive.
-        const int a = t.atria.empty() ? -1 : region_index(organ, t.atria);
-        const sim::Drive* atria = a >= 0 ? &model.regions[static_cast<std::size_t>(a)].drive : nullptr;
-        const auto& atrial_beats = a >= 0 && static_cast<std::size_t>(a) < model.beat_boundaries.size()
-                                       ? model.beat_boundaries[static_cast<std::size_t>(a)]
-                                       : regular;
-        const bool fibrillating = atria && atria->rate_hz > kFibrillationHz;
-        std::vector<double> p_times;
-        if (atria && !fibrillating) {
-          p_times = beat_onsets_s(*atria, atrial_beats, model.ramp_s, clip_s);
-          for (double& p_time : p_times) p_time -= kElectromechanicalDelayS;
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-          const double time = double(i) / kSignalRateHz;
-          trace.values[i] = overlay::ecg_value(time, r_times, atria ? &p_times : nullptr);
-          if (fibrillating) trace.values[i] += kFibrillationMv * (2 * sim::activation(*atria, time, model.ramp_s, atrial_beats) - 1);
-        }
-      }
-    }
-    traces_.push_back(std::move(trace));
-    trace_volume_organ_.push_back(volume_organ);
-  }
+  traces_.push_back(std::move(trace));
+  trace_volume_organ_.push_back(volume_organ);
 }
 
 void OverlayPlan::record_volume(int organ, int frame, const Eigen::Matrix3Xd& positions) {

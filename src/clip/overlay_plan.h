@@ -71,6 +71,11 @@ class OverlayPlan {
     scene::PixelRect rect;      ///< unit: px
     std::string title;
   };
+  // The constructor's parts, in order: views first (they decide whether anything is drawn).
+  void plan_views(const scene::Scene& scene);
+  void plan_labels(const scene::Scene& scene, const world::World& world);
+  void plan_legend(const scene::Scene& scene, const world::World& world);
+  void plan_trace(const scene::Scene& scene, const world::World& world, const scene::TraceOverlay& t);
   void layout(int width, int height);
 
   bool empty_ = true;

@@ -1,4 +1,5 @@
 #include "clip/render_clip.h"
+#include "clip/video_format.h"
 
 #include <algorithm>
 #include <chrono>
@@ -90,9 +91,6 @@ void map_colors(const DynamicColors& dynamic, const world::OrganBody& body, cons
 /// ready, so a stage that is briefly slower does not stall the other.
 constexpr int kPipelineDepth = 3;
 
-/// Encoder threads, for the two-core machines we target (docs/performance.md): see
-/// kRasterizerThreads.
-constexpr int kEncoderThreads = 1;
 
 /// The frames to render: the request's list checked against the clip, or every frame.
 std::vector<int> selected_frames(const RenderRequest& request, int frame_count) {
@@ -119,39 +117,237 @@ std::vector<int> selected_frames(const RenderRequest& request, int frame_count) 
   return request.frames;
 }
 
-encode::VideoFormat encode_format(scene::Format f) {
-  switch (f) {
-    case scene::Format::kMkv: return encode::VideoFormat::kMkv;
-    case scene::Format::kWebm: return encode::VideoFormat::kWebm;
-    case scene::Format::kGif: return encode::VideoFormat::kGif;
-    default: return encode::VideoFormat::kMp4;
+/// Every organ's surface as the renderer holds it, and the buffers each pipeline slot fills.
+struct ClipSurfaces {
+  std::vector<std::vector<SurfaceBuffers>> slots;  ///< slots[k][o]: organ o of the frame in slot k.
+  std::vector<int> ids;                            ///< The renderer's surface id of each organ.
+  std::vector<std::optional<DynamicColors>> dynamic;
+};
+
+ClipSurfaces add_surfaces(render::Renderer& renderer, const scene::Scene& scene, const world::World& world) {
+  ClipSurfaces s;
+  s.slots.assign(kPipelineDepth, std::vector<SurfaceBuffers>(world.organs.size()));
+  s.dynamic.resize(world.organs.size());
+  for (std::size_t o = 0; o < world.organs.size(); ++o) {
+    const auto& body = world.organs[o];
+    const auto& organ = scene.organs[o];
+    const auto& surface = body.geometry.mesh.surface;
+    s.ids.push_back(renderer.add_surface(surface.triangles,
+                                         render::static_vertex_colors(organ, body.geometry.vertex_region),
+                                         organ.material, vertex_opacity(organ, body.geometry.vertex_region)));
+    if (organ.clip.enabled) renderer.set_clip(s.ids.back(), organ.clip);
+    if (const render::OrganColorMap map = render::organ_color_map(organ); map.has) {
+      s.dynamic[o].emplace();
+      s.dynamic[o]->map = map.map;
+      s.dynamic[o]->by = organ.color_by;
+      if (organ.color_by == scene::ColorBy::kStrain) s.dynamic[o]->strain.emplace(surface.positions, surface.triangles);
+    }
+    for (auto& slot : s.slots) {
+      slot[o].positions.resize(3 * surface.positions.size());
+      slot[o].normals.resize(3 * surface.positions.size());
+      if (s.dynamic[o]) slot[o].colors.resize(3 * surface.positions.size());
+    }
   }
+  return s;
 }
 
-/// The encoder settings for the scene's output in `format`. VP9's constant quality and
-/// speed follow output.quality like x264's CRF and preset (docs/teaching-visuals.md).
-encode::VideoSettings video_settings(const scene::Output& out, encode::VideoFormat format) {
-  encode::VideoSettings v;
-  v.format = format;
-  v.width = out.width;
-  v.height = out.height;
-  v.fps = out.fps;
-  v.crf = out.crf;
-  v.preset = out.preset;
-  v.threads = kEncoderThreads;
-  const auto [vp9_crf, vp9_speed] = out.quality == scene::Quality::kDraft      ? std::pair{40, 5}
-                                    : out.quality == scene::Quality::kArchival ? std::pair{24, 2}
-                                                                               : std::pair{32, 4};
-  v.vp9_crf = vp9_crf;
-  v.vp9_speed = vp9_speed;
-  return v;
+std::unique_ptr<encode::FrameSink> open_video_sink(const scene::Scene& scene, const RenderRequest& request) {
+  if (request.video.empty()) return nullptr;
+  return encode::open_video(request.video, video_settings(scene.output, video_format(scene, request.video)));
 }
+
+std::unique_ptr<encode::FrameSink> open_png_sink(const RenderRequest& request, int frame_count) {
+  if (request.png_dir.empty()) return nullptr;
+  return std::make_unique<encode::PngSequenceWriter>(request.png_dir, frame_count);
+}
+
+/// One clip's frames: what the three stages (clip/frame_pipeline.h) share, made in this order
+/// (sinks are opened before the first frame so a bad output path fails before any work). Each
+/// stage adds to its own times only (one thread each).
+class ClipFrames {
+ public:
+  ClipFrames(const scene::Scene& scene, const RenderRequest& request, const std::vector<int>& frames, world::World& world,
+             render::Renderer& renderer, StageTimes& times)
+      : scene_(scene), out_(scene.output), frames_(frames), world_(world), renderer_(renderer), times_(times),
+        surfaces_(add_surfaces(renderer, scene, world)),
+        // The views: each a rectangle with its organs' surfaces; the render stage moves their cameras.
+        views_(frame_views(scene, surfaces_.ids)),
+        video_(open_video_sink(scene, request)),
+        png_(open_png_sink(request, out_.frame_count())),
+        // Title cards open the video when it starts at the clip's start; PNG frames are the
+        // clip's frames only (with their captions), numbered as always.
+        cards_(scene),
+        video_offset_(video_ && frames.front() == 0 ? cards_.card_frames() : 0),
+        // Overlays: anchors captured with the positions (produce), handed on through the render
+        // stage's slots (produce may refill its slot before consume is done), drawn after FXAA.
+        overlay_(scene, world),
+        overlay_produced_(kPipelineDepth),
+        overlay_rendered_(kPipelineDepth) {
+    if (!overlay_.volume_organs().empty() && request.from_bake.empty()) {
+      const auto record = [this](int frame) {
+        for (int o : overlay_.volume_organs()) {
+          world::render_positions(world_.organs[static_cast<std::size_t>(o)], volume_positions_);
+          overlay_.record_volume(o, frame, volume_positions_);
+        }
+      };
+      if (world_.frames_done == 0) record(0);
+      world_.after_frame = record;
+    }
+    frame_positions_.resize(world.organs.size());
+    images_.assign(kPipelineDepth, Image(out_.width, out_.height));
+    if (!request.from_bake.empty()) bake_.emplace(request.from_bake).check_matches(scene, world);
+  }
+
+  /// Writes the title cards before the clip's first frame, when the video starts there.
+  void write_cards() {
+    if (video_offset_ == 0) return;
+    const auto t0 = Clock::now();
+    Image card(out_.width, out_.height);
+    for (int k = 0; k < video_offset_; ++k) {
+      cards_.draw_card(k, card);
+      video_->write(card, k);
+    }
+    times_.card_frames = video_offset_;
+    times_.encode_s += seconds_since(t0);
+  }
+
+  /// Simulates (or reads from the bake) frame i into `slot`: positions, normals, colours, overlay anchors.
+  void produce(int i, int slot) {
+    const int f = frames_[static_cast<std::size_t>(i)];
+    auto t0 = Clock::now();
+    if (!bake_) world::advance_to_frame(world_, f);  // Steps through every frame in between.
+    for (std::size_t o = 0; o < world_.organs.size(); ++o) {
+      fill_surface(f, o, surfaces_.slots[static_cast<std::size_t>(slot)][o]);
+    }
+    times_.simulate_s += seconds_since(t0);
+    if (!overlay_.empty()) {
+      t0 = Clock::now();
+      // From a bake, the volume history comes from the bake's frames (every one up to this).
+      for (int o : bake_ ? overlay_.volume_organs() : std::vector<int>{}) {
+        for (int g = 0; g <= f; ++g) {
+          if (overlay_.has_volume(o, g)) continue;
+          bake_->read(g, o, volume_positions_);
+          overlay_.record_volume(o, g, volume_positions_);
+        }
+      }
+      overlay_.capture(f, frame_positions_, overlay_produced_[static_cast<std::size_t>(slot)]);
+      times_.simulate_s += seconds_since(t0);  // This thread's own sum: the capture is counted with it.
+    }
+  }
+
+  /// Draws the frame in `slot` and reads it back.
+  void render(int i, int slot) {
+    auto t0 = Clock::now();
+    for (std::size_t o = 0; o < surfaces_.ids.size(); ++o) {
+      const auto& buf = surfaces_.slots[static_cast<std::size_t>(slot)][o];
+      renderer_.update_surface(surfaces_.ids[o], buf.positions.data(), buf.normals.data());
+      if (surfaces_.dynamic[o]) renderer_.update_colors(surfaces_.ids[o], buf.colors.data());
+    }
+    const double t_s = frames_[static_cast<std::size_t>(i)] / out_.fps;
+    set_view_cameras(scene_, t_s, views_);
+    renderer_.draw(views_, scene_.lights, out_.background);
+    times_.render_s += seconds_since(t0);
+    t0 = Clock::now();
+    renderer_.read_frame(images_[static_cast<std::size_t>(slot)]);
+    times_.readback_s += seconds_since(t0);
+    if (!overlay_.empty()) {
+      overlay_rendered_[static_cast<std::size_t>(slot)] = overlay_produced_[static_cast<std::size_t>(slot)];
+    }
+  }
+
+  /// Anti-aliases the frame in `slot`, draws the overlays and captions on it and encodes it.
+  void consume(int i, int slot) {
+    Image& image = images_[static_cast<std::size_t>(slot)];
+    auto t0 = Clock::now();
+    if (out_.antialias == scene::Antialias::kFxaa) fxaa_.apply(image);
+    times_.antialias_s += seconds_since(t0);
+    if (!overlay_.empty()) {
+      // After FXAA: text and lines stay crisp.
+      t0 = Clock::now();
+      overlay_.draw(image, overlay_rendered_[static_cast<std::size_t>(slot)]);
+      times_.overlay_s += seconds_since(t0);
+    }
+    t0 = Clock::now();
+    const int f = frames_[static_cast<std::size_t>(i)];
+    cards_.draw_captions(f, image);
+    if (video_) video_->write(image, video_offset_ + f);
+    if (png_) png_->write(image, f);
+    times_.encode_s += seconds_since(t0);
+    ++times_.frames;
+  }
+
+  void finish() {
+    const auto t0 = Clock::now();
+    if (video_) video_->finish();
+    if (png_) png_->finish();
+    times_.encode_s += seconds_since(t0);
+  }
+
+ private:
+  /// Organ o's surface at frame f: the positions source is the simulation, or a bake of it.
+  void fill_surface(int f, std::size_t o, SurfaceBuffers& buf) {
+    if (bake_) {
+      bake_->read(f, static_cast<int>(o), buf.mesh_positions);
+    } else {
+      world::render_positions(world_.organs[o], buf.mesh_positions);
+    }
+    const Eigen::Index n = buf.mesh_positions.cols();
+    const double* x = buf.mesh_positions.data();
+    for (Eigen::Index k = 0; k < 3 * n; ++k) buf.positions[k] = static_cast<float>(x[k]);
+    mesh::vertex_normals(x, static_cast<int>(n), world_.organs[o].geometry.mesh.surface.triangles, buf.normals.data());
+    if (surfaces_.dynamic[o]) map_colors(*surfaces_.dynamic[o], world_.organs[o], scene_.organs[o], f / out_.fps, buf);
+    frame_positions_[o] = &buf.mesh_positions;
+  }
+
+  const scene::Scene& scene_;
+  const scene::Output& out_;
+  const std::vector<int>& frames_;
+  world::World& world_;
+  render::Renderer& renderer_;
+  StageTimes& times_;
+  ClipSurfaces surfaces_;
+  std::vector<render::ViewDraw> views_;
+  std::unique_ptr<encode::FrameSink> video_, png_;
+  overlay::CardPainter cards_;
+  int video_offset_ = 0;
+  OverlayPlan overlay_;
+  std::vector<OverlayFrame> overlay_produced_, overlay_rendered_;
+  Eigen::Matrix3Xd volume_positions_;
+  std::vector<const Eigen::Matrix3Xd*> frame_positions_;
+  std::vector<Image> images_;
+  render::Fxaa fxaa_;
+  std::optional<BakeReader> bake_;
+};
 
 }  // namespace
 
-encode::VideoFormat video_format(const scene::Scene& scene, const std::filesystem::path& video) {
-  if (const auto named = encode::video_format_of(video)) return *named;
-  return encode_format(scene.output.format);
+StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) {
+  const auto start = Clock::now();
+  StageTimes times;
+  const auto& out = scene.output;
+  const std::vector<int> frames = selected_frames(request, out.frame_count());
+  check_scene_limits(scene, {static_cast<int>(frames.size()), !request.video.empty(), !request.png_dir.empty()},
+                     request.limits);
+  world::World world = world::build_world(scene);
+  check_world_limits(scene, world, request.limits);
+  const int msaa = out.antialias == scene::Antialias::kMsaa4 ? 4 : out.antialias == scene::Antialias::kMsaa2 ? 2 : 0;
+  render::Renderer renderer(out.width, out.height, msaa);
+  ClipFrames clip(scene, request, frames, world, renderer, times);
+  Progress progress(request.job.empty() ? scene.name : request.job, static_cast<int>(frames.size()),
+                    request.progress);
+  PipelineStages stages;
+  stages.produce = [&](int i, int slot) { clip.produce(i, slot); };
+  stages.render = [&](int i, int slot) { clip.render(i, slot); };
+  stages.consume = [&](int i, int slot) {
+    clip.consume(i, slot);
+    progress.update(times.frames);
+  };
+  clip.write_cards();
+  run_frame_pipeline(static_cast<int>(frames.size()), kPipelineDepth, request.overlap, stages);
+  clip.finish();
+  progress.finish();
+  times.wall_s = seconds_since(start);
+  return times;
 }
 
 std::vector<render::ViewDraw> frame_views(const scene::Scene& scene, const std::vector<int>& surface_ids) {
@@ -183,180 +379,6 @@ void set_view_cameras(const scene::Scene& scene, double t_s, std::vector<render:
     const bool own = v < scene.views.size() && scene.views[v].has_camera;
     views[v].camera = camera_at(own ? scene.views[v].camera : scene.camera, t_s);
   }
-}
-
-std::filesystem::path default_video_path(const scene::Scene& scene) {
-  if (!scene.output.file.empty()) return scene.output.file;
-  return std::filesystem::path("out") / (scene.name + "." + encode::extension_of(encode_format(scene.output.format)));
-}
-
-StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) {
-  const auto start = Clock::now();
-  StageTimes times;
-  const auto& out = scene.output;
-  const int frame_count = out.frame_count();
-  const std::vector<int> frames = selected_frames(request, frame_count);
-  check_scene_limits(scene, {static_cast<int>(frames.size()), !request.video.empty(), !request.png_dir.empty()},
-                     request.limits);
-  world::World world = world::build_world(scene);
-  check_world_limits(scene, world, request.limits);
-  const int msaa = out.antialias == scene::Antialias::kMsaa4 ? 4 : out.antialias == scene::Antialias::kMsaa2 ? 2 : 0;
-  render::Renderer renderer(out.width, out.height, msaa);
-
-  // slots[k][o]: organ o of the frame in slot k.
-  std::vector<std::vector<SurfaceBuffers>> slots(kPipelineDepth, std::vector<SurfaceBuffers>(world.organs.size()));
-  std::vector<int> surface_ids;
-  std::vector<std::optional<DynamicColors>> dynamic(world.organs.size());
-  for (std::size_t o = 0; o < world.organs.size(); ++o) {
-    const auto& body = world.organs[o];
-    const auto& organ = scene.organs[o];
-    const auto& surface = body.geometry.mesh.surface;
-    surface_ids.push_back(renderer.add_surface(surface.triangles,
-                                               render::static_vertex_colors(organ, body.geometry.vertex_region),
-                                               organ.material, vertex_opacity(organ, body.geometry.vertex_region)));
-    if (organ.clip.enabled) renderer.set_clip(surface_ids.back(), organ.clip);
-    if (const render::OrganColorMap map = render::organ_color_map(organ); map.has) {
-      dynamic[o].emplace();
-      dynamic[o]->map = map.map;
-      dynamic[o]->by = organ.color_by;
-      if (organ.color_by == scene::ColorBy::kStrain) dynamic[o]->strain.emplace(surface.positions, surface.triangles);
-    }
-    for (auto& slot : slots) {
-      slot[o].positions.resize(3 * surface.positions.size());
-      slot[o].normals.resize(3 * surface.positions.size());
-      if (dynamic[o]) slot[o].colors.resize(3 * surface.positions.size());
-    }
-  }
-  // The views: each a rectangle with its organs' surfaces; the render stage moves their cameras.
-  std::vector<render::ViewDraw> views = frame_views(scene, surface_ids);
-
-  // Sinks are opened before the first frame so a bad output path fails before any work.
-  std::unique_ptr<encode::FrameSink> video, png;
-  if (!request.video.empty()) {
-    video = encode::open_video(request.video, video_settings(out, video_format(scene, request.video)));
-  }
-  if (!request.png_dir.empty()) png = std::make_unique<encode::PngSequenceWriter>(request.png_dir, frame_count);
-  // Title cards open the video when it starts at the clip's start; PNG frames are the
-  // clip's frames only (with their captions), numbered as always.
-  overlay::CardPainter cards(scene);
-  const int video_offset = video && frames.front() == 0 ? cards.card_frames() : 0;
-
-  // Overlays: anchors captured with the positions (produce), handed on through the render
-  // stage's slots (produce may refill its slot before consume is done), drawn after FXAA.
-  OverlayPlan overlay(scene, world);
-  std::vector<OverlayFrame> overlay_produced(kPipelineDepth), overlay_rendered(kPipelineDepth);
-  Eigen::Matrix3Xd volume_positions;
-  if (!overlay.volume_organs().empty() && request.from_bake.empty()) {
-    const auto record = [&](int frame) {
-      for (int o : overlay.volume_organs()) {
-        world::render_positions(world.organs[static_cast<std::size_t>(o)], volume_positions);
-        overlay.record_volume(o, frame, volume_positions);
-      }
-    };
-    if (world.frames_done == 0) record(0);
-    world.after_frame = record;
-  }
-  std::vector<const Eigen::Matrix3Xd*> frame_positions(world.organs.size());
-
-  std::vector<Image> images(kPipelineDepth, Image(out.width, out.height));
-  render::Fxaa fxaa;
-  std::optional<BakeReader> bake;
-  if (!request.from_bake.empty()) bake.emplace(request.from_bake).check_matches(scene, world);
-  Progress progress(request.job.empty() ? scene.name : request.job, static_cast<int>(frames.size()),
-                    request.progress);
-
-  // Each stage adds to its own times only (one thread each).
-  PipelineStages stages;
-  stages.produce = [&](int i, int slot) {
-    const int f = frames[static_cast<std::size_t>(i)];
-    auto t0 = Clock::now();
-    if (!bake) world::advance_to_frame(world, f);  // Steps through every frame in between.
-    for (std::size_t o = 0; o < world.organs.size(); ++o) {
-      auto& buf = slots[static_cast<std::size_t>(slot)][o];
-      // The positions source: the simulation, or a bake of it.
-      if (bake) {
-        bake->read(f, static_cast<int>(o), buf.mesh_positions);
-      } else {
-        world::render_positions(world.organs[o], buf.mesh_positions);
-      }
-      const Eigen::Index n = buf.mesh_positions.cols();
-      const double* x = buf.mesh_positions.data();
-      for (Eigen::Index k = 0; k < 3 * n; ++k) buf.positions[k] = static_cast<float>(x[k]);
-      mesh::vertex_normals(x, static_cast<int>(n), world.organs[o].geometry.mesh.surface.triangles,
-                           buf.normals.data());
-      if (dynamic[o]) map_colors(*dynamic[o], world.organs[o], scene.organs[o], f / out.fps, buf);
-      frame_positions[o] = &buf.mesh_positions;
-    }
-    times.simulate_s += seconds_since(t0);
-    if (!overlay.empty()) {
-      t0 = Clock::now();
-      // From a bake, the volume history comes from the bake's frames (every one up to this).
-      for (int o : bake ? overlay.volume_organs() : std::vector<int>{}) {
-        for (int g = 0; g <= f; ++g) {
-          if (overlay.has_volume(o, g)) continue;
-          bake->read(g, o, volume_positions);
-          overlay.record_volume(o, g, volume_positions);
-        }
-      }
-      overlay.capture(f, frame_positions, overlay_produced[static_cast<std::size_t>(slot)]);
-      times.simulate_s += seconds_since(t0);  // This thread's own sum: the capture is counted with it.
-    }
-  };
-  stages.render = [&](int i, int slot) {
-    auto t0 = Clock::now();
-    for (std::size_t o = 0; o < surface_ids.size(); ++o) {
-      const auto& buf = slots[static_cast<std::size_t>(slot)][o];
-      renderer.update_surface(surface_ids[o], buf.positions.data(), buf.normals.data());
-      if (dynamic[o]) renderer.update_colors(surface_ids[o], buf.colors.data());
-    }
-    const double t_s = frames[static_cast<std::size_t>(i)] / out.fps;
-    set_view_cameras(scene, t_s, views);
-    renderer.draw(views, scene.lights, out.background);
-    times.render_s += seconds_since(t0);
-    t0 = Clock::now();
-    renderer.read_frame(images[static_cast<std::size_t>(slot)]);
-    times.readback_s += seconds_since(t0);
-    if (!overlay.empty()) overlay_rendered[static_cast<std::size_t>(slot)] = overlay_produced[static_cast<std::size_t>(slot)];
-  };
-  stages.consume = [&](int i, int slot) {
-    Image& image = images[static_cast<std::size_t>(slot)];
-    auto t0 = Clock::now();
-    if (out.antialias == scene::Antialias::kFxaa) fxaa.apply(image);
-    times.antialias_s += seconds_since(t0);
-    if (!overlay.empty()) {
-      // After FXAA: text and lines stay crisp.
-      t0 = Clock::now();
-      overlay.draw(image, overlay_rendered[static_cast<std::size_t>(slot)]);
-      times.overlay_s += seconds_since(t0);
-    }
-    t0 = Clock::now();
-    const int f = frames[static_cast<std::size_t>(i)];
-    cards.draw_captions(f, image);
-    if (video) video->write(image, video_offset + f);
-    if (png) png->write(image, f);
-    times.encode_s += seconds_since(t0);
-    ++times.frames;
-    progress.update(times.frames);
-  };
-  if (video_offset > 0) {
-    const auto t0 = Clock::now();
-    Image card(out.width, out.height);
-    for (int k = 0; k < video_offset; ++k) {
-      cards.draw_card(k, card);
-      video->write(card, k);
-    }
-    times.card_frames = video_offset;
-    times.encode_s += seconds_since(t0);
-  }
-  run_frame_pipeline(static_cast<int>(frames.size()), kPipelineDepth, request.overlap, stages);
-
-  const auto t0 = Clock::now();
-  if (video) video->finish();
-  if (png) png->finish();
-  times.encode_s += seconds_since(t0);
-  progress.finish();
-  times.wall_s = seconds_since(start);
-  return times;
 }
 
 std::string describe(const StageTimes& t) {

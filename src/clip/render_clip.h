@@ -24,7 +24,7 @@ inline constexpr int kRasterizerThreads = 1;
 struct RenderRequest {
   std::filesystem::path video;    ///< Video to write (format: video_format()); empty: no video.
   std::filesystem::path png_dir;  ///< Folder for numbered PNG frames; empty: none.
-  /// Frames to render and encode (0-based, sorted, no duplicates; clip::parse_frame_list);
+  /// Frames to render and encode (0-based, sorted, no duplicates; app::parse_frame_list);
   /// empty: every frame. The simulation still steps through every frame up to the last
   /// listed one, so frame k is the same image whatever else is rendered. A video needs
   /// consecutive frames (it then holds that range, starting at time 0).
@@ -71,13 +71,5 @@ std::vector<render::ViewDraw> frame_views(const scene::Scene& scene, const std::
 
 /// Puts every view's camera (its own, else the scene's) where it is at time t_s (unit: s).
 void set_view_cameras(const scene::Scene& scene, double t_s, std::vector<render::ViewDraw>& views);
-
-/// The default video path for a scene: the scene's output.file, else out/<name>.<ext>, the
-/// extension of output.format (.mp4 unless the scene asks for another).
-std::filesystem::path default_video_path(const scene::Scene& scene);
-
-/// The format a video is written in: the one its extension names (.mp4, .mkv, .webm, .gif),
-/// else the scene's output.format. So `-o clip.gif` makes a GIF whatever the scene says.
-encode::VideoFormat video_format(const scene::Scene& scene, const std::filesystem::path& video);
 
 }  // namespace systole::clip

@@ -4,10 +4,109 @@
 #include <string>
 #include <vector>
 
-#include "clip/render_clip.h"
+#include "clip/video_format.h"
 #include "sim/solvers/step_size.h"
 
 namespace systole::study {
+namespace {
+
+/// Each region of an organ with its vertex count, pin and drive.
+void summarize_regions(std::ostringstream& s, const scene::Organ& organ, const world::OrganBody& body) {
+  std::vector<int> counts(organ.regions.size() + 1, 0);
+  for (int r : body.geometry.vertex_region) ++counts[r + 1];
+  if (counts[0] > 0) s << "  region (undriven body): " << counts[0] << " vertices\n";
+  for (std::size_t r = 0; r < organ.regions.size(); ++r) {
+    const auto& region = organ.regions[r];
+    s << "  region " << region.name << ": " << counts[r + 1] << " vertices";
+    if (region.pinned) s << ", pinned";
+    if (region.drive.waveform != scene::Waveform::kNone) {
+      s << ", drive " << region.drive.rate_hz * 60.0 << " per min, amplitude " << region.drive.amplitude;
+      if (region.drive.delay_s != 0) s << ", delay " << region.drive.delay_s * 1e3 << " ms";
+    }
+    if (region.stiffness_scale != 1.0) s << ", stiffness x" << region.stiffness_scale;
+    s << "\n";
+  }
+}
+
+/// The constraints an organ's model was built with, what was left out, and what a step costs.
+void summarize_model(std::ostringstream& s, const scene::Organ& organ, const world::OrganBody& body, double dt_s) {
+  const auto& m = body.model;
+  s << "  constraints: " << m.springs.stretch_count << " stretch springs, " << m.springs.bending_count
+    << " bending springs (" << m.springs.colors() << " colours)";
+  s << (m.volume.enabled ? ", 1 volume constraint" : ", no volume constraint");
+  if (!m.pokes.empty() || !m.grabs.empty()) s << ", " << m.pokes.size() << " pokes, " << m.grabs.size() << " grabs";
+  s << "\n";
+  const auto pinned = (m.inverse_mass.array() == 0).count();
+  s << "  built: " << m.particle_count() << " particles";
+  if (body.embedding.empty()) {
+    s << " (full model: every vertex)";
+  } else {
+    s << " (lattice " << organ.body.lattice << ": voxel corners; the " << body.geometry.report.vertices
+      << " render vertices follow by embedding)";
+  }
+  if (pinned > 0) s << ", " << pinned << " pinned (held, not solved; no spring between two of them)";
+  s << "\n  left out:";
+  int left_out = 0;
+  if (m.springs.bending_count == 0) s << (left_out++ ? "," : "") << " bending (body.bending is 0)";
+  if (!m.volume.enabled) {
+    s << (left_out++ ? "," : "") << " volume constraint ("
+      << (organ.body.volume_stiffness_Pa > 0 ? "the surface is open" : "body.volume_stiffness is 0") << ")";
+  }
+  if (body.embedding.empty()) s << (left_out++ ? "," : "") << " reduction (body.lattice is 0)";
+  if (left_out == 0) s << " nothing";
+  const double cost = sim::estimated_cost_s_per_s(m, dt_s);
+  s << "\n  cost estimate: " << cost * 1e3 << " ms per simulated second on one thread ("
+    << (cost > 0 ? 1.0 / cost : 0.0) << "x real time; `systole bench` measures)\n";
+}
+
+/// The video: format, size, frames, loop, cards and captions.
+void summarize_output(std::ostringstream& s, const scene::Scene& scene) {
+  const auto& out = scene.output;
+  s << "output " << clip::default_video_path(scene).extension().string().substr(1) << ", " << out.width << "x" << out.height
+    << ", " << out.fps << " fps, " << out.frame_count() << " frames (" << out.duration_s << " s of organ time";
+  if (out.slow_motion != 1) {
+    s << " at " << out.slow_motion << "x slow motion: " << out.frame_count() / out.fps << " s of video";
+  }
+  s << ")\n";
+  if (out.loop) {
+    s << "  loop: " << out.duration_s << " s, whole cycles of every drive; starts after " << out.start_frame
+      << " settling frames (" << out.start_frame * out.frame_period_s() << " s)\n";
+  }
+  if (!scene.cards.empty() || !scene.captions.empty()) {
+    double cards_s = 0;
+    for (const auto& c : scene.cards) cards_s += c.duration_s;
+    s << "  " << scene.cards.size() << " title card(s) (" << cards_s << " s, before the clip), "
+      << scene.captions.size() << " caption(s)\n";
+  }
+}
+
+/// The overlay's parts in one line (nothing when the scene has none).
+void summarize_overlay(std::ostringstream& s, const scene::Overlay& ov) {
+  if (ov.empty()) return;
+  std::vector<std::string> parts;
+  if (!ov.title.empty()) parts.push_back("title \"" + ov.title + "\"");
+  if (ov.labels.enabled) {
+    const std::string which =
+        ov.labels.regions.empty() ? std::string("every region") : std::to_string(ov.labels.regions.size()) + " regions";
+    parts.push_back("labels of " + which + (ov.labels.organ.empty() ? "" : " of " + ov.labels.organ));
+  }
+  if (ov.legend.enabled) parts.push_back("legend of region colours");
+  for (const auto& t : ov.traces) {
+    std::ostringstream trace;
+    const char* signal = t.signal == scene::TraceSignal::kVolume ? "volume"
+                         : t.signal == scene::TraceSignal::kEcg  ? "ecg"
+                                                                 : "activation";
+    trace << signal << (t.region.empty() ? "" : " of " + t.region) << " trace (";
+    if (t.window_s > 0) trace << t.window_s << " s sweep)";
+    else trace << "whole clip)";
+    parts.push_back(trace.str());
+  }
+  s << "overlay:";
+  for (std::size_t i = 0; i < parts.size(); ++i) s << (i ? "; " : " ") << parts[i];
+  s << " (docs/teaching-visuals.md)\n";
+}
+
+}  // namespace
 
 std::string summarize(const scene::Scene& scene, const world::World& world) {
   std::ostringstream s;
@@ -19,88 +118,15 @@ std::string summarize(const scene::Scene& scene, const world::World& world) {
     s << "organ " << organ.name << ": " << report.vertices << " vertices, " << report.triangles << " triangles, "
       << (report.closed() ? "closed" : "open") << ", volume " << report.volume_m3 * 1e6 << " cm^3\n";
     for (const auto& note : report.notes) s << "  mesh: " << note << "\n";
-    std::vector<int> counts(organ.regions.size() + 1, 0);
-    for (int r : body.geometry.vertex_region) ++counts[r + 1];
-    if (counts[0] > 0) s << "  region (undriven body): " << counts[0] << " vertices\n";
-    for (std::size_t r = 0; r < organ.regions.size(); ++r) {
-      const auto& region = organ.regions[r];
-      s << "  region " << region.name << ": " << counts[r + 1] << " vertices";
-      if (region.pinned) s << ", pinned";
-      if (region.drive.waveform != scene::Waveform::kNone) {
-        s << ", drive " << region.drive.rate_hz * 60.0 << " per min, amplitude " << region.drive.amplitude;
-        if (region.drive.delay_s != 0) s << ", delay " << region.drive.delay_s * 1e3 << " ms";
-      }
-      if (region.stiffness_scale != 1.0) s << ", stiffness x" << region.stiffness_scale;
-      s << "\n";
-    }
-    const auto& m = body.model;
-    s << "  constraints: " << m.springs.stretch_count << " stretch springs, " << m.springs.bending_count
-      << " bending springs (" << m.springs.colors() << " colours)";
-    s << (m.volume.enabled ? ", 1 volume constraint" : ", no volume constraint");
-    if (!m.pokes.empty() || !m.grabs.empty()) s << ", " << m.pokes.size() << " pokes, " << m.grabs.size() << " grabs";
-    s << "\n";
-    const auto pinned = (m.inverse_mass.array() == 0).count();
-    s << "  built: " << m.particle_count() << " particles";
-    if (body.embedding.empty()) {
-      s << " (full model: every vertex)";
-    } else {
-      s << " (lattice " << organ.body.lattice << ": voxel corners; the " << report.vertices << " render vertices follow by embedding)";
-    }
-    if (pinned > 0) s << ", " << pinned << " pinned (held, not solved; no spring between two of them)";
-    s << "\n  left out:";
-    int left_out = 0;
-    if (m.springs.bending_count == 0) s << (left_out++ ? "," : "") << " bending (body.bending is 0)";
-    if (!m.volume.enabled) {
-      s << (left_out++ ? "," : "") << " volume constraint ("
-        << (organ.body.volume_stiffness_Pa > 0 ? "the surface is open" : "body.volume_stiffness is 0") << ")";
-    }
-    if (body.embedding.empty()) s << (left_out++ ? "," : "") << " reduction (body.lattice is 0)";
-    if (left_out == 0) s << " nothing";
-    const double cost = sim::estimated_cost_s_per_s(m, world.dt_s);
-    s << "\n  cost estimate: " << cost * 1e3 << " ms per simulated second on one thread (" << (cost > 0 ? 1.0 / cost : 0.0)
-      << "x real time; `systole bench` measures)\n";
+    summarize_regions(s, organ, body);
+    summarize_model(s, organ, body, world.dt_s);
   }
   s << "solver " << scene::method_name(scene.solver.method) << ": dt " << world.dt_s * 1e3 << " ms ("
     << world.steps_per_frame << " steps per frame)";
   for (const auto& body : world.organs) s << ", " << body.model.name << " " << body.model.substeps << " substeps";
   s << "\n  why: " << world.step_reason << "\n";
-  const auto& out = scene.output;
-  s << "output " << clip::default_video_path(scene).extension().string().substr(1) << ", " << out.width << "x" << out.height
-    << ", " << out.fps << " fps, " << out.frame_count() << " frames (" << out.duration_s << " s of organ time";
-  if (out.slow_motion != 1) s << " at " << out.slow_motion << "x slow motion: " << out.frame_count() / out.fps << " s of video";
-  s << ")\n";
-  if (out.loop) {
-    s << "  loop: " << out.duration_s << " s, whole cycles of every drive; starts after " << out.start_frame
-      << " settling frames (" << out.start_frame * out.frame_period_s() << " s)\n";
-  }
-  if (!scene.cards.empty() || !scene.captions.empty()) {
-    double cards_s = 0;
-    for (const auto& c : scene.cards) cards_s += c.duration_s;
-    s << "  " << scene.cards.size() << " title card(s) (" << cards_s << " s, before the clip), " << scene.captions.size()
-      << " caption(s)\n";
-  }
-  const scene::Overlay& ov = scene.overlay;
-  if (!ov.empty()) {
-    std::vector<std::string> parts;
-    if (!ov.title.empty()) parts.push_back("title \"" + ov.title + "\"");
-    if (ov.labels.enabled) {
-      parts.push_back("labels of " +
-                      (ov.labels.regions.empty() ? std::string("every region") : std::to_string(ov.labels.regions.size()) + " regions") +
-                      (ov.labels.organ.empty() ? "" : " of " + ov.labels.organ));
-    }
-    if (ov.legend.enabled) parts.push_back("legend of region colours");
-    for (const auto& t : ov.traces) {
-      std::ostringstream trace;
-      trace << (t.signal == scene::TraceSignal::kVolume ? "volume" : t.signal == scene::TraceSignal::kEcg ? "ecg" : "activation")
-            << (t.region.empty() ? "" : " of " + t.region) << " trace (";
-      if (t.window_s > 0) trace << t.window_s << " s sweep)";
-      else trace << "whole clip)";
-      parts.push_back(trace.str());
-    }
-    s << "overlay:";
-    for (std::size_t i = 0; i < parts.size(); ++i) s << (i ? "; " : " ") << parts[i];
-    s << " (docs/teaching-visuals.md)\n";
-  }
+  summarize_output(s, scene);
+  summarize_overlay(s, scene.overlay);
   return s.str();
 }
 

@@ -9,6 +9,7 @@
 
 #include "overlay/cards.h"
 #include "clip/render_clip.h"
+#include "clip/video_format.h"
 #include "support/run.h"
 #include "encode/encode_test_util.h"
 #include "encode/png.h"
