@@ -11,6 +11,18 @@
 namespace systole::cli {
 namespace {
 
+/// What `systole bench` was given.
+struct BenchArgs {
+  std::string scene;
+  std::vector<std::string> defines;
+  std::string output;
+  double duration_s = 0;
+  std::vector<std::string> methods, dts;
+  std::vector<int> substeps, lattices;
+  std::string reference_dt = "1/960";
+  int reference_substeps = 32;
+};
+
 /// A step as "1/240", "0.004" (seconds) or "auto" (0: the solver's stable step).
 double parse_step(const std::string& text) {
   try {
@@ -36,20 +48,28 @@ double parse_step(const std::string& text) {
   }
 }
 
+/// The grid the --method, --dt, --substeps and --lattice lists narrow to (unnamed lists: their default).
+std::vector<study::BenchConfig> narrowed_grid(const BenchArgs& o) {
+  std::vector<scene::SolverMethod> methods;
+  for (const auto& m : o.methods) {
+    methods.push_back(m == "xpbd" ? scene::SolverMethod::kXpbd
+                      : m == "implicit" ? scene::SolverMethod::kImplicit
+                                        : scene::SolverMethod::kExplicit);
+  }
+  if (methods.empty()) {
+    methods = {scene::SolverMethod::kXpbd, scene::SolverMethod::kImplicit, scene::SolverMethod::kExplicit};
+  }
+  std::vector<double> dts;
+  for (const auto& d : o.dts) dts.push_back(parse_step(d));
+  if (dts.empty()) dts = {1.0 / 240.0};
+  return study::grid_of(methods, dts, o.substeps.empty() ? std::vector<int>{4} : o.substeps,
+                      o.lattices.empty() ? std::vector<int>{0} : o.lattices);
+}
+
 }  // namespace
 
 Command add_bench_command(CLI::App& app) {
-  struct Options {
-    std::string scene;
-    std::vector<std::string> defines;
-    std::string output;
-    double duration_s = 0;
-    std::vector<std::string> methods, dts;
-    std::vector<int> substeps, lattices;
-    std::string reference_dt = "1/960";
-    int reference_substeps = 32;
-  };
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<BenchArgs>();
   auto* cmd = app.add_subcommand("bench", "Speed versus error: run the scene's organs over solver x step x model "
                                           "configurations against a reference; print a table, write CSV and a plot.");
   cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
@@ -77,18 +97,7 @@ Command add_bench_command(CLI::App& app) {
             options.reference_substeps = o->reference_substeps;
             if (options.reference_dt_s == 0) throw Error(ExitCode::kUsage, "--reference-dt needs a step, not auto");
             if (!o->methods.empty() || !o->dts.empty() || !o->substeps.empty() || !o->lattices.empty()) {
-              std::vector<scene::SolverMethod> methods;
-              for (const auto& m : o->methods) {
-                methods.push_back(m == "xpbd" ? scene::SolverMethod::kXpbd
-                                  : m == "implicit" ? scene::SolverMethod::kImplicit
-                                                    : scene::SolverMethod::kExplicit);
-              }
-              if (methods.empty()) methods = {scene::SolverMethod::kXpbd, scene::SolverMethod::kImplicit, scene::SolverMethod::kExplicit};
-              std::vector<double> dts;
-              for (const auto& d : o->dts) dts.push_back(parse_step(d));
-              if (dts.empty()) dts = {1.0 / 240.0};
-              options.grid = study::grid_of(methods, dts, o->substeps.empty() ? std::vector<int>{4} : o->substeps,
-                                          o->lattices.empty() ? std::vector<int>{0} : o->lattices);
+              options.grid = narrowed_grid(*o);
             }
             const study::BenchReport report =
                 study::run_bench(scene, options, [](const std::string& run) { std::cerr << "bench: " << run << "\n"; });

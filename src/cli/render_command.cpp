@@ -32,6 +32,15 @@ clip::ProgressStyle progress_style(const std::string& progress) {
 
 namespace {
 
+/// What `systole render` was given.
+struct RenderArgs {
+  std::vector<std::string> scenes;
+  std::string output, png_dir, frames, from_bake, shard, progress;
+  std::vector<std::string> defines;
+  bool no_video = false, allow_large = false, force = false, dry_run = false;
+  int jobs = 1;
+};
+
 /// --dry-run: each job of this shard, its overrides and its video, and whether it is done.
 void print_plan(const std::vector<batch::Job>& jobs, const batch::BatchOptions& options) {
   for (const auto& job : jobs) {
@@ -53,17 +62,48 @@ void print_plan(const std::vector<batch::Job>& jobs, const batch::BatchOptions& 
   }
 }
 
+/// Renders this shard's jobs; the exit code (a lone job's failure is thrown as its error).
+int run_render(const RenderArgs& o) {
+  const auto all = batch::expand_jobs(o.scenes, o.defines);
+  const batch::Shard shard = o.shard.empty() ? batch::shard_from_environment() : batch::parse_shard(o.shard);
+  const auto jobs = batch::select_shard(all, shard);
+  batch::BatchOptions options;
+  options.output = o.output;
+  options.png_dir = o.png_dir;
+  options.no_video = o.no_video;
+  options.frames = o.frames;
+  options.from_bake = o.from_bake;
+  options.limits = o.allow_large ? clip::Limits::none() : clip::Limits{};
+  options.progress = progress_style(o.progress);
+  options.force = o.force;
+  options.parallel = o.jobs;
+  options.several = all.size() > 1;
+  if (!shard.source.empty()) {
+    std::cerr << "shard " << shard.index << "/" << shard.count << " (" << shard.source << "): " << jobs.size()
+              << " of " << all.size() << " jobs\n";
+  }
+  if (o.dry_run) {
+    print_plan(jobs, options);
+    return 0;
+  }
+  // llvmpipe reads its thread count when the process (or a batch child, which inherits
+  // it) creates its first context; a value the user set wins.
+  ::setenv("LP_NUM_THREADS", std::to_string(batch::rasterizer_threads(jobs.size(), options)).c_str(),
+           /*overwrite=*/0);
+  const bool json = options.progress == clip::ProgressStyle::kJson;
+  const auto results = batch::run_jobs(jobs, options, [&](const batch::JobResult& r) {
+    if (json) std::cout << batch::result_json(r) << std::endl;
+  });
+  if (options.several) std::cerr << batch::summary_table(results);
+  const int code = batch::batch_exit_code(results);
+  if (code != 0 && !options.several) throw Error(static_cast<ExitCode>(code), results[0].error);
+  return code;
+}
+
 }  // namespace
 
 Command add_render_command(CLI::App& app) {
-  struct Options {
-    std::vector<std::string> scenes;
-    std::string output, png_dir, frames, from_bake, shard, progress;
-    std::vector<std::string> defines;
-    bool no_video = false, allow_large = false, force = false, dry_run = false;
-    int jobs = 1;
-  };
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<RenderArgs>();
   auto* cmd = app.add_subcommand("render", "Simulate and render scenes to videos (and PNG frames).");
   cmd->add_option("scene", o->scenes, "Scene files (YAML), folders of them, or glob patterns")->required();
   cmd->add_option("-o,--output", o->output,
@@ -89,42 +129,7 @@ Command add_render_command(CLI::App& app) {
   add_define_option(*cmd, o->defines);
   add_allow_large_flag(*cmd, o->allow_large);
 
-  return {cmd, [o] {
-            const auto all = batch::expand_jobs(o->scenes, o->defines);
-            const batch::Shard shard = o->shard.empty() ? batch::shard_from_environment() : batch::parse_shard(o->shard);
-            const auto jobs = batch::select_shard(all, shard);
-            batch::BatchOptions options;
-            options.output = o->output;
-            options.png_dir = o->png_dir;
-            options.no_video = o->no_video;
-            options.frames = o->frames;
-            options.from_bake = o->from_bake;
-            options.limits = o->allow_large ? clip::Limits::none() : clip::Limits{};
-            options.progress = progress_style(o->progress);
-            options.force = o->force;
-            options.parallel = o->jobs;
-            options.several = all.size() > 1;
-            if (!shard.source.empty()) {
-              std::cerr << "shard " << shard.index << "/" << shard.count << " (" << shard.source << "): " << jobs.size()
-                        << " of " << all.size() << " jobs\n";
-            }
-            if (o->dry_run) {
-              print_plan(jobs, options);
-              return 0;
-            }
-            // llvmpipe reads its thread count when the process (or a batch child, which inherits
-            // it) creates its first context; a value the user set wins.
-            ::setenv("LP_NUM_THREADS", std::to_string(batch::rasterizer_threads(jobs.size(), options)).c_str(),
-                     /*overwrite=*/0);
-            const bool json = options.progress == clip::ProgressStyle::kJson;
-            const auto results = batch::run_jobs(jobs, options, [&](const batch::JobResult& r) {
-              if (json) std::cout << batch::result_json(r) << std::endl;
-            });
-            if (options.several) std::cerr << batch::summary_table(results);
-            const int code = batch::batch_exit_code(results);
-            if (code != 0 && !options.several) throw Error(static_cast<ExitCode>(code), results[0].error);
-            return code;
-          }};
+  return {cmd, [o] { return run_render(*o); }};
 }
 
 }  // namespace systole::cli
