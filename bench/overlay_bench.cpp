@@ -9,8 +9,8 @@
 #include <string>
 
 #include "clip/overlay_plan.h"
-#include "world/world.h"
 #include "scene/load.h"
+#include "world/world.h"
 
 namespace {
 

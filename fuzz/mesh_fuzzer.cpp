@@ -16,8 +16,8 @@
 #include "mesh/organ.h"
 #include "sim/from_scene.h"
 #include "sim/model.h"
-#include "sim/state.h"
 #include "sim/solvers/step.h"
+#include "sim/state.h"
 
 namespace {
 

@@ -9,9 +9,9 @@
 #include <string_view>
 
 #include "clip/limits.h"
-#include "world/world.h"
 #include "common/error.h"
 #include "scene/load.h"
+#include "world/world.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace systole;

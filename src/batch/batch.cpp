@@ -16,13 +16,13 @@
 #include <sstream>
 #include <thread>
 
+#include "batch/manifest.h"
 #include "clip/bake.h"
 #include "clip/frame_list.h"
 #include "clip/video_format.h"
-#include "scene/content_hash.h"
-#include "common/json.h"
-#include "batch/manifest.h"
 #include "common/error.h"
+#include "common/json.h"
+#include "scene/content_hash.h"
 #include "scene/load.h"
 
 namespace systole::batch {

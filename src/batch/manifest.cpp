@@ -4,10 +4,10 @@
 #include <sstream>
 #include <system_error>
 
-#include "common/json.h"
 #include "common/atomic_output.h"
 #include "common/error.h"
 #include "common/hash.h"
+#include "common/json.h"
 
 namespace systole::batch {
 namespace fs = std::filesystem;

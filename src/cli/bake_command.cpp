@@ -1,8 +1,8 @@
 #include <iostream>
 #include <memory>
 
-#include "clip/bake.h"
 #include "cli/command.h"
+#include "clip/bake.h"
 #include "scene/load.h"
 
 namespace systole::cli {

@@ -1,12 +1,12 @@
 #include <iostream>
 #include <memory>
 
-#include "study/accuracy.h"
 #include "cli/command.h"
 #include "common/error.h"
 #include "encode/png.h"
 #include "plot/plot.h"
 #include "scene/load.h"
+#include "study/accuracy.h"
 
 namespace systole::cli {
 namespace {

@@ -1,10 +1,10 @@
 #include <iostream>
 #include <memory>
 
-#include "study/compare.h"
 #include "cli/command.h"
 #include "common/error.h"
 #include "encode/png.h"
+#include "study/compare.h"
 
 namespace systole::cli {
 

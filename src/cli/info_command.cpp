@@ -1,7 +1,7 @@
 #include <iostream>
 
-#include "study/info.h"
 #include "cli/command.h"
+#include "study/info.h"
 
 namespace systole::cli {
 

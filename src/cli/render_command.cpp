@@ -5,11 +5,11 @@
 #include <string>
 
 #include "batch/batch.h"
+#include "batch/manifest.h"
+#include "cli/command.h"
 #include "clip/frame_list.h"
 #include "clip/limits.h"
-#include "batch/manifest.h"
 #include "clip/progress.h"
-#include "cli/command.h"
 #include "common/error.h"
 #include "scene/content_hash.h"
 #include "scene/load.h"

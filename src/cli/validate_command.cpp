@@ -1,11 +1,11 @@
 #include <iostream>
 #include <memory>
 
+#include "cli/command.h"
 #include "clip/limits.h"
+#include "scene/load.h"
 #include "study/summary.h"
 #include "world/world.h"
-#include "cli/command.h"
-#include "scene/load.h"
 
 namespace systole::cli {
 

@@ -4,10 +4,10 @@
 #include <chrono>
 #include <cstring>
 
-#include "scene/content_hash.h"
 #include "common/atomic_output.h"
 #include "common/error.h"
 #include "common/hash.h"
+#include "scene/content_hash.h"
 
 namespace systole::clip {
 namespace fs = std::filesystem;

@@ -19,8 +19,8 @@
 #include <Eigen/Core>
 
 #include "clip/progress.h"
-#include "world/world.h"
 #include "scene/scene.h"
+#include "world/world.h"
 
 namespace systole::clip {
 

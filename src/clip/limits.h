@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
-#include "world/world.h"
 #include "scene/scene.h"
+#include "world/world.h"
 
 namespace systole::clip {
 

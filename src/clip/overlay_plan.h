@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "world/world.h"
 #include "common/image.h"
 #include "overlay/labels.h"
 #include "overlay/legend.h"
 #include "overlay/trace.h"
 #include "scene/scene.h"
+#include "world/world.h"
 
 namespace systole::clip {
 

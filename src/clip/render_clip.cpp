@@ -11,21 +11,21 @@
 
 #include "clip/bake.h"
 #include "clip/camera_motion.h"
-#include "overlay/cards.h"
 #include "clip/frame_list.h"
 #include "clip/frame_pipeline.h"
 #include "clip/overlay_plan.h"
 #include "clip/progress.h"
-#include "world/world.h"
 #include "common/error.h"
-#include "encode/video_writer.h"
 #include "encode/png.h"
+#include "encode/video_writer.h"
 #include "mesh/normals.h"
 #include "mesh/strain.h"
+#include "overlay/cards.h"
 #include "render/color_map.h"
 #include "render/fxaa.h"
 #include "render/renderer.h"
 #include "sim/drive.h"
+#include "world/world.h"
 
 namespace systole::clip {
 namespace {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "mesh/geometry.h"
-#include "sim/params.h"
 #include "sim/model.h"
+#include "sim/params.h"
 
 namespace systole::sim {
 

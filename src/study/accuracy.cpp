@@ -9,10 +9,10 @@
 #include <map>
 #include <sstream>
 
-#include "world/world.h"
 #include "common/atomic_output.h"
 #include "common/error.h"
 #include "sim/model.h"
+#include "world/world.h"
 
 namespace systole::study {
 namespace {

@@ -4,9 +4,9 @@
 #include <Eigen/Core>
 #include <sstream>
 
-#include "study/renderer_key.h"
 #include "encode/versions.h"
 #include "render/renderer.h"
+#include "study/renderer_key.h"
 
 namespace systole::study {
 

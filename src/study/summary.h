@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "world/world.h"
 #include "scene/scene.h"
+#include "world/world.h"
 
 namespace systole::study {
 

@@ -4,9 +4,9 @@
 #include <limits>
 #include <numbers>
 
-#include "world/world.h"
 #include "sim/from_scene.h"
 #include "sim/solvers/step.h"
+#include "world/world.h"
 
 namespace systole::train {
 

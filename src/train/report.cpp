@@ -3,9 +3,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "chart/svg_chart.h"
 #include "common/atomic_output.h"
 #include "common/error.h"
-#include "chart/svg_chart.h"
 
 namespace systole::train {
 

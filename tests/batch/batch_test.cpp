@@ -10,8 +10,8 @@
 #include <set>
 #include <thread>
 
-#include "support/run.h"
 #include "common/error.h"
+#include "support/run.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

@@ -7,8 +7,8 @@
 #include <complex>
 #include <numbers>
 
-#include "support/run.h"
 #include "encode/png.h"
+#include "support/run.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

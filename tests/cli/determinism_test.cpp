@@ -5,8 +5,8 @@
 
 #include <set>
 
-#include "support/run.h"
 #include "encode/png.h"
+#include "support/run.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

@@ -12,11 +12,11 @@
 #include <iostream>
 #include <set>
 
-#include "study/compare.h"
-#include "support/run.h"
 #include "common/error.h"
 #include "encode/png.h"
 #include "scene/load.h"
+#include "study/compare.h"
+#include "support/run.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

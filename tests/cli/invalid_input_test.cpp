@@ -8,11 +8,11 @@
 #include <gtest/gtest.h>
 
 #include "clip/limits.h"
-#include "support/run.h"
-#include "world/world.h"
 #include "common/error.h"
 #include "scene/load.h"
 #include "scene/schema.h"
+#include "support/run.h"
+#include "world/world.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "clip/render_clip.h"
-#include "support/run.h"
 #include "scene/load.h"
+#include "support/run.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

@@ -13,11 +13,11 @@
 #include "clip/bake.h"
 #include "clip/progress.h"
 #include "clip/render_clip.h"
-#include "support/run.h"
-#include "world/world.h"
 #include "render/camera_matrices.h"
 #include "render/color_map.h"
 #include "scene/load.h"
+#include "support/run.h"
+#include "world/world.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

@@ -7,13 +7,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "overlay/cards.h"
 #include "clip/render_clip.h"
 #include "clip/video_format.h"
-#include "support/run.h"
 #include "encode/encode_test_util.h"
 #include "encode/png.h"
+#include "overlay/cards.h"
 #include "scene/load.h"
+#include "support/run.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

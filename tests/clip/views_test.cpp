@@ -9,13 +9,13 @@
 
 #include "clip/camera_motion.h"
 #include "clip/render_clip.h"
-#include "support/run.h"
-#include "world/world.h"
 #include "encode/png.h"
 #include "mesh/strain.h"
 #include "render/color_map.h"
 #include "scene/load.h"
 #include "sim/drive.h"
+#include "support/run.h"
+#include "world/world.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

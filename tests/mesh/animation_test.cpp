@@ -7,9 +7,9 @@
 #include <cstring>
 
 #include "common/error.h"
+#include "mesh/gltf_writer.h"
 #include "mesh/icosphere.h"
 #include "mesh/import.h"
-#include "mesh/gltf_writer.h"
 #include "test_meshes.h"
 
 namespace systole::mesh {

@@ -5,8 +5,8 @@
 #include <cstring>
 
 #include "sim/model.h"
-#include "support/beating_ball.h"
 #include "sim/solvers/step.h"
+#include "support/beating_ball.h"
 
 namespace systole::sim {
 namespace {

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "sim/model.h"
-#include "support/beating_ball.h"
 #include "sim/solvers/step.h"
+#include "support/beating_ball.h"
 
 namespace systole::sim {
 namespace {

@@ -9,10 +9,10 @@
 #include <numbers>
 
 #include "sim/forces.h"
-#include "sim/solvers/implicit_euler.h"
 #include "sim/model.h"
-#include "support/beating_ball.h"
+#include "sim/solvers/implicit_euler.h"
 #include "sim/solvers/step.h"
+#include "support/beating_ball.h"
 
 namespace systole::sim {
 namespace {

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "sim/model.h"
-#include "support/shapes.h"
 #include "sim/solvers/step.h"
+#include "support/shapes.h"
 
 namespace systole::sim {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "sim/model.h"
-#include "support/beating_ball.h"
 #include "sim/solvers/step.h"
+#include "support/beating_ball.h"
 
 namespace systole::sim {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "sim/reduced.h"
-#include "support/shapes.h"
 #include "sim/solvers/step.h"
+#include "support/shapes.h"
 
 namespace systole::sim {
 namespace {

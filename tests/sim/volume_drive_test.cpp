@@ -6,8 +6,8 @@
 #include "common/error.h"
 #include "sim/forces.h"
 #include "sim/model.h"
-#include "sim/state.h"
 #include "sim/solvers/step.h"
+#include "sim/state.h"
 #include "support/shapes.h"
 
 namespace systole::sim {

@@ -7,9 +7,9 @@
 
 #include <cmath>
 
-#include "support/run.h"
 #include "common/error.h"
 #include "encode/png.h"
+#include "support/run.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

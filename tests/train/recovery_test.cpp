@@ -6,12 +6,12 @@
 
 #include <cmath>
 
-#include "world/world.h"
 #include "scene/load.h"
 #include "sim/solvers/step.h"
 #include "train/fourier.h"
 #include "train/train_test_util.h"
 #include "train/tune.h"
+#include "world/world.h"
 
 namespace systole::train {
 namespace {

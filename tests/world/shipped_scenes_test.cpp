@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "support/run.h"
-#include "world/world.h"
 #include "scene/load.h"
 #include "sim/model.h"
 #include "sim/solvers/step.h"
+#include "support/run.h"
+#include "world/world.h"
 
 using namespace systole::test;  // support/run.h: run, systole, source, scratch
 

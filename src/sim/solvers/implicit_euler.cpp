@@ -5,9 +5,9 @@
 #include <cassert>
 #include <cmath>
 
+#include "sim/constraints/volume.h"
 #include "sim/drive.h"
 #include "sim/forces.h"
-#include "sim/constraints/volume.h"
 #include "sim/interactions.h"
 #include "sim/solvers/substep.h"
 
