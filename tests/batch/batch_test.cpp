@@ -13,8 +13,6 @@
 #include "common/error.h"
 #include "support/run.h"
 
-using namespace systole::test;  // support/run.h: run, systole, source, scratch
-
 namespace systole::test {
 namespace {
 

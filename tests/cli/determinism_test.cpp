@@ -8,8 +8,6 @@
 #include "encode/png.h"
 #include "support/run.h"
 
-using namespace systole::test;  // support/run.h: run, systole, source, scratch
-
 namespace systole::test {
 namespace {
 

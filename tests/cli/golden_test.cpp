@@ -18,8 +18,6 @@
 #include "study/compare.h"
 #include "support/run.h"
 
-using namespace systole::test;  // support/run.h: run, systole, source, scratch
-
 namespace systole::test {
 namespace {
 

@@ -15,8 +15,6 @@
 
 extern char** environ;
 
-using namespace systole::test;  // support/run.h: run, systole, source, scratch
-
 namespace systole::test {
 namespace {
 

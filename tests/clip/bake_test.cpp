@@ -4,8 +4,6 @@
 
 #include "support/run.h"
 
-using namespace systole::test;  // support/run.h: run, systole, source, scratch
-
 namespace systole::test {
 namespace {
 

@@ -15,8 +15,6 @@
 #include "scene/load.h"
 #include "support/run.h"
 
-using namespace systole::test;  // support/run.h: run, systole, source, scratch
-
 namespace systole::test {
 namespace {
 

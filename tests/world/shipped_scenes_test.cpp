@@ -18,8 +18,6 @@
 #include "support/run.h"
 #include "world/world.h"
 
-using namespace systole::test;  // support/run.h: run, systole, source, scratch
-
 namespace systole::test {
 namespace {
 
