@@ -13,7 +13,7 @@ namespace systole::scene {
 // ---------------------------------------------------------------------------------------
 // Solver, view and output.
 
-enum class SolverMethod { kXpbd, kExplicit, kImplicit };
+enum class SolverMethod { kXpbd, kExplicit, kImplicit, kProjective };
 
 /// The name the scene gives a solver ("xpbd", "explicit", "implicit").
 inline const char* method_name(SolverMethod m) {
@@ -21,6 +21,7 @@ inline const char* method_name(SolverMethod m) {
     case SolverMethod::kXpbd: return "xpbd";
     case SolverMethod::kExplicit: return "explicit";
     case SolverMethod::kImplicit: return "implicit";
+    case SolverMethod::kProjective: return "projective";
   }
   return "?";
 }
@@ -29,7 +30,8 @@ struct Solver {
   SolverMethod method = SolverMethod::kXpbd;
   bool auto_dt = false;        ///< Choose dt from the drive and stiffness (sim core issue).
   double dt_s = 1.0 / 240.0;   ///< Step size. unit: s
-  int substeps = 4;            ///< XPBD substeps per step. unit: 1
+  int substeps = 4;            ///< Substeps per step (XPBD, explicit, projective). unit: 1
+  int iterations = 2;          ///< Projective: local/global iterations per substep. unit: 1
   int threads = 1;             ///< Threads for the simulation's spring loops; the result is the same at any count.
   Origin origin;
 };

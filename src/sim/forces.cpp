@@ -22,14 +22,16 @@ void internal_and_scripted_forces(const Model& model, const Eigen::Matrix3Xd& x,
       const Eigen::Vector3d d = x.col(b) - x.col(a);
       const double len = d.norm();
       if (len < 1e-12) continue;
-      const Eigen::Vector3d n = d / len;
       const double k = 1.0 / sp.compliance_m_per_N[j];
       const double c = k * sp.damping_s[j];
-      // Hooke spring plus a damper along the spring: it resists stretching speed only.
-      const double tension =
-          k * (len - driven_rest_length(sp, j, state.region_contraction)) + c * n.dot(v.col(b) - v.col(a));
-      f.col(a) += tension * n;
-      f.col(b) -= tension * n;
+      // Hooke spring plus an isotropic damper on the whole relative velocity (Rayleigh
+      // damping C = damping_s K of the edge graph): constant in time and position, so every
+      // solver integrates exactly the same damping and a factorized solver keeps it in its
+      // matrix (docs/accuracy.md: why the damper is not along the spring).
+      const Eigen::Vector3d force_a = k * (len - driven_rest_length(sp, j, state.region_contraction)) / len * d +
+                                      c * (v.col(b) - v.col(a));
+      f.col(a) += force_a;
+      f.col(b) -= force_a;
     }
   }
   if (model.volume.enabled) {

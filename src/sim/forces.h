@@ -28,7 +28,8 @@ inline double driven_rest_volume(const Model& model, double t_s) {
 }
 
 /// Force on every particle at positions x, velocities v and time t (regions' contraction
-/// already in state.region_contraction): springs with stiffness-proportional damping, the
+/// already in state.region_contraction): springs with isotropic stiffness-proportional
+/// damping c (v_b - v_a), c = k damping_s, the
 /// volume pressure, active pokes and grabs. Gravity and drag are not included (they act on
 /// velocities directly). Deterministic: accumulated in spring order. unit: N
 void internal_and_scripted_forces(const Model& model, const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v,

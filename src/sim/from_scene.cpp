@@ -50,6 +50,7 @@ Method method_params(scene::SolverMethod method) {
     case scene::SolverMethod::kXpbd: return Method::kXpbd;
     case scene::SolverMethod::kExplicit: return Method::kExplicit;
     case scene::SolverMethod::kImplicit: return Method::kImplicit;
+    case scene::SolverMethod::kProjective: return Method::kProjective;
   }
   return Method::kXpbd;
 }
@@ -94,8 +95,8 @@ OrganParams organ_params(const scene::Organ& organ) {
 
 ModelOptions model_options(const scene::Scene& scene, const std::string& organ_name, double dt_s) {
   ModelOptions options;
-  options.solver = {method_params(scene.solver.method), scene.solver.substeps, scene.solver.threads,
-                    scene.solver.auto_dt};
+  options.solver = {method_params(scene.solver.method), scene.solver.substeps, scene.solver.iterations,
+                    scene.solver.threads, scene.solver.auto_dt};
   options.dt_s = dt_s;
   options.gravity = scene.gravity;
   const double frame_s = scene.output.frame_period_s();

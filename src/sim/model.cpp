@@ -139,6 +139,7 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
   m.name = organ.name;
   m.method = options.solver.method;
   m.substeps = options.solver.substeps;
+  m.iterations = options.solver.iterations;
   m.threads = options.solver.threads;
   m.gravity = options.gravity;
   m.drag_per_s = organ.body.drag_per_s;

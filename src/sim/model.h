@@ -85,6 +85,7 @@ struct Model {
   std::string name;                         ///< The organ's name, for messages.
   Method method = Method::kXpbd;
   int substeps = 4;                         ///< Per step; chosen by the builder when solver.auto_substeps.
+  int iterations = 2;                       ///< Projective: local/global iterations per substep.
   int threads = 1;                          ///< Threads for the spring loops (same result at any count).
   Eigen::Matrix3Xd rest_positions;          ///< unit: m
   Eigen::VectorXd inverse_mass;             ///< unit: 1/kg; 0 = pinned.

@@ -11,7 +11,18 @@
 
 namespace systole::sim {
 
-enum class Method { kXpbd, kExplicit, kImplicit };
+enum class Method { kXpbd, kExplicit, kImplicit, kProjective };
+
+/// The method's name as scenes write it (solver.method).
+inline const char* method_name(Method m) {
+  switch (m) {
+    case Method::kXpbd: return "xpbd";
+    case Method::kExplicit: return "explicit";
+    case Method::kImplicit: return "implicit";
+    case Method::kProjective: return "projective";
+  }
+  return "unknown";
+}
 
 /// The periodic activation phi(t) that shortens a region's springs,
 /// L(t) = L0 (1 - amplitude phi(t - delay)); sim/drive.h evaluates it.
@@ -106,7 +117,8 @@ struct Floor {
 /// The solver settings.
 struct SolverParams {
   Method method = Method::kXpbd;
-  int substeps = 4;  ///< XPBD and explicit substeps per step (ignored when auto_substeps).
+  int substeps = 4;  ///< Substeps per step (ignored when auto_substeps).
+  int iterations = 2;  ///< Projective: local/global iterations per substep.
   int threads = 1;   ///< Threads for the spring loops; the result is the same at any count.
   /// Choose the substeps from the body's stiffness and the step (solver.dt: auto).
   bool auto_substeps = false;

@@ -10,25 +10,36 @@
 
 namespace systole::sim {
 
-struct ImplicitCache;  // sim/implicit_euler.h
+/// What a solver keeps between steps - a system matrix, its factorization, the history a
+/// multistep method needs - built by its first step. Polymorphic so State need not know
+/// each solver's cache, and cloneable so a copied State steps on its own with the same
+/// results.
+struct SolverCache {
+  virtual ~SolverCache() = default;
+  virtual std::unique_ptr<SolverCache> clone() const = 0;
+};
 
-/// The implicit solver's reusable system matrix (pattern built once), value-slot table and
-/// CG solver: empty until the first implicit step builds it. Copying deep-copies it, so a
-/// copied State steps on its own with the same results.
-class ImplicitScratch {
+/// Owns a SolverCache; copying deep-copies it.
+class SolverScratch {
  public:
-  ImplicitScratch();
-  ~ImplicitScratch();
-  ImplicitScratch(const ImplicitScratch& other);
-  ImplicitScratch& operator=(const ImplicitScratch& other);
-  ImplicitScratch(ImplicitScratch&& other) noexcept;
-  ImplicitScratch& operator=(ImplicitScratch&& other) noexcept;
+  SolverScratch() = default;
+  SolverScratch(const SolverScratch& other) : cache_(other.cache_ ? other.cache_->clone() : nullptr) {}
+  SolverScratch& operator=(const SolverScratch& other) {
+    if (this != &other) cache_ = other.cache_ ? other.cache_->clone() : nullptr;
+    return *this;
+  }
+  SolverScratch(SolverScratch&&) noexcept = default;
+  SolverScratch& operator=(SolverScratch&&) noexcept = default;
 
-  ImplicitCache* get() const { return cache_.get(); }
-  void reset(std::unique_ptr<ImplicitCache> cache);
+  /// The cache if it is a T, else null (another solver stepped this state before).
+  template <class T>
+  T* get() const {
+    return dynamic_cast<T*>(cache_.get());
+  }
+  void reset(std::unique_ptr<SolverCache> cache) { cache_ = std::move(cache); }
 
  private:
-  std::unique_ptr<ImplicitCache> cache_;
+  std::unique_ptr<SolverCache> cache_;
 };
 
 struct State {
@@ -45,7 +56,7 @@ struct State {
   Eigen::Matrix3Xd volume_gradient;  ///< dV/dx per particle. unit: m^2
   Eigen::Matrix3Xd attachment_target;  ///< Attachment targets at the current substep. unit: m
   Eigen::Matrix3Xd force;            ///< Force per particle (explicit and implicit solvers). unit: N
-  ImplicitScratch implicit;          ///< Matrix and solver of the implicit solver (built lazily).
+  SolverScratch solver_cache;        ///< The implicit or projective solver's matrices (built lazily).
 };
 
 /// The body at rest at t = 0.

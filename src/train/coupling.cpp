@@ -37,10 +37,10 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
       const Eigen::Vector3d d = state.x.col(b) - state.x.col(a);
       const double len = d.norm();
       if (len < 1e-12) continue;
-      // The spring's force as one XPBD iteration exerts it, lambda / h^2 = -C / (h^2 (1 + gamma) w + alpha)
-      // (XPBD eq. 18 and 26): below the stiffness 1 / alpha when the particles are light.
-      const double gamma = sp.damping_s[j] / h;
-      const double k = 1.0 / (h * h * (1.0 + gamma) * (model.inverse_mass[a] + model.inverse_mass[b]) + sp.compliance_m_per_N[j]);
+      // The spring's force as one XPBD iteration exerts it, lambda / h^2 = -C / (h^2 w + alpha)
+      // (XPBD eq. 18; the damper is a separate velocity pass): below the stiffness 1 / alpha
+      // when the particles are light.
+      const double k = 1.0 / (h * h * (model.inverse_mass[a] + model.inverse_mass[b]) + sp.compliance_m_per_N[j]);
       const Eigen::Vector3d gradient = (k * sp.rest_m[j] / len) * d;  // k L0 n
       for (int end : {sp.region_a[j], sp.region_b[j]}) {
         const int c = end >= 0 ? column_of[end] : -1;

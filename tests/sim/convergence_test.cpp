@@ -64,10 +64,6 @@ double rms_motion(const std::vector<Eigen::Matrix3Xd>& a, const Eigen::Matrix3Xd
   return std::sqrt(sum / double(n));
 }
 
-const char* name_of(Method m) {
-  return m == Method::kXpbd ? "xpbd" : m == Method::kExplicit ? "explicit" : "implicit";
-}
-
 class Convergence : public ::testing::TestWithParam<Method> {};
 
 TEST_P(Convergence, ErrorShrinksWithTheStep) {
@@ -77,14 +73,14 @@ TEST_P(Convergence, ErrorShrinksWithTheStep) {
   double previous = 1e9;
   for (double h : {h0, h0 / 2, h0 / 4}) {
     const double e = rms_error(trajectory(method, h), reference);
-    EXPECT_LT(e, 0.8 * previous) << name_of(method) << ": error at h = " << h << " s did not shrink";
+    EXPECT_LT(e, 0.8 * previous) << method_name(method) << ": error at h = " << h << " s did not shrink";
     previous = e;
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, Convergence,
                          ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit),
-                         [](const auto& info) { return std::string(name_of(info.param)); });
+                         [](const auto& info) { return std::string(method_name(info.param)); });
 
 TEST(Convergence, AllSolversApproachTheSameMotion) {
   const double h = 1.0 / 9600;

@@ -35,10 +35,6 @@ bool same_bits(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
 }
 
-const char* name_of(Method m) {
-  return m == Method::kXpbd ? "xpbd" : m == Method::kExplicit ? "explicit" : "implicit";
-}
-
 class ThreadDeterminism : public ::testing::TestWithParam<Method> {};
 
 TEST_P(ThreadDeterminism, OneAndTwoThreadsGiveTheSameBits) {
@@ -57,8 +53,8 @@ TEST_P(ThreadDeterminism, OneAndTwoThreadsGiveTheSameBits) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, ThreadDeterminism,
-                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit),
-                         [](const auto& info) { return std::string(name_of(info.param)); });
+                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit, Method::kProjective),
+                         [](const auto& info) { return std::string(method_name(info.param)); });
 
 }  // namespace
 }  // namespace systole::sim

@@ -149,20 +149,17 @@ int substeps_for(Method m, const Case& c) {
   return m == Method::kXpbd ? 4 : 1;
 }
 
-const char* name_of(Method m) {
-  return m == Method::kXpbd ? "xpbd" : m == Method::kExplicit ? "explicit" : "implicit";
-}
-
 class HardCases : public ::testing::TestWithParam<Method> {};
 
 TEST_P(HardCases, EachCaseIsStableOrDiagnosedAsDocumented) {
   const Method method = GetParam();
   for (const auto& e : expectations()) {
     const Case c = e.make();
+    // Projective dynamics is implicit too (a backward-difference step): the same outcomes.
     const Outcome expected =
         method == Method::kXpbd ? e.xpbd : method == Method::kExplicit ? e.explicit_euler : e.implicit;
     const Result r = simulate(c, method, substeps_for(method, c));
-    SCOPED_TRACE(e.name + " with " + name_of(method));
+    SCOPED_TRACE(e.name + " with " + method_name(method));
     if (expected == Outcome::kDiagnosed) {
       EXPECT_EQ(r.outcome, Outcome::kDiagnosed) << "expected the health check to stop it";
       EXPECT_FALSE(r.diagnosis.empty());
@@ -175,8 +172,8 @@ TEST_P(HardCases, EachCaseIsStableOrDiagnosedAsDocumented) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, HardCases,
-                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit),
-                         [](const auto& info) { return std::string(name_of(info.param)); });
+                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit, Method::kProjective),
+                         [](const auto& info) { return std::string(method_name(info.param)); });
 
 }  // namespace
 }  // namespace systole::sim

@@ -167,7 +167,7 @@ TEST(Implicit, StableAtAFrameStepWhereExplicitBlowsUp) {
   EXPECT_LT(worst_volume, 0.01) << "the stiff volume holds (Sherman-Morrison keeps it implicit)";
   EXPECT_GT(moved, 1e-3) << "the drive still moves the body";
   EXPECT_LT(moved, 0.05) << "and the motion stays organ-sized";
-  EXPECT_EQ(s.implicit.get()->unconverged_solves, 0);
+  EXPECT_EQ(s.solver_cache.get<ImplicitCache>()->unconverged_solves, 0);
 }
 
 TEST(Implicit, ErrorShrinksWithTheStep) {
@@ -189,9 +189,12 @@ TEST(Implicit, ErrorShrinksWithTheStep) {
   // And the limit is the explicit solver's: the same forces, integrated another way.
   Ball explicit_ball = ball;
   explicit_ball.options.solver.method = sim::Method::kExplicit;
+  explicit_ball.options.solver.auto_substeps = true;  // Its stability limit, not the implicit's step.
+  explicit_ball.options.dt_s = 1.0 / 7680;
   const State explicit_reference = run(explicit_ball.model(), 1.0 / 7680, t);
   const double motion = (reference.x - m.rest_positions).colwise().norm().maxCoeff();
-  EXPECT_LT(max_distance(explicit_reference, reference), 0.1 * e1) << "motion " << motion;
+  // The 1/7680 s reference is itself first order: about e1 / 8 from the limit.
+  EXPECT_LT(max_distance(explicit_reference, reference), 0.2 * e1) << "motion " << motion;
 }
 
 TEST(Implicit, AgreesWithXpbdAsTheStepShrinks) {

@@ -11,10 +11,6 @@ namespace {
 
 using sim::Method;
 
-const char* name_of(Method m) {
-  return m == Method::kXpbd ? "xpbd" : m == Method::kExplicit ? "explicit" : "implicit";
-}
-
 class Kinematic : public ::testing::TestWithParam<Method> {};
 
 TEST_P(Kinematic, RegionFollowsItsPathAndCarriesTheBody) {
@@ -44,15 +40,15 @@ TEST_P(Kinematic, RegionFollowsItsPathAndCarriesTheBody) {
     ASSERT_FALSE(diagnose(m, s).has_value());
   }
   for (int i : m.kinematic[0].particles) {
-    EXPECT_NEAR((s.x.col(i) - m.rest_positions.col(i)).y(), -0.02, 1e-12) << name_of(GetParam());
+    EXPECT_NEAR((s.x.col(i) - m.rest_positions.col(i)).y(), -0.02, 1e-12) << method_name(GetParam());
   }
   const double centroid_drop = m.rest_positions.row(1).mean() - s.x.row(1).mean();
   EXPECT_NEAR(centroid_drop, 0.02, 0.004) << "the free body followed its base down";
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, Kinematic,
-                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit),
-                         [](const auto& info) { return std::string(name_of(info.param)); });
+                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit, Method::kProjective),
+                         [](const auto& info) { return std::string(method_name(info.param)); });
 
 }  // namespace
 }  // namespace systole::sim

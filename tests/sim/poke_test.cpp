@@ -46,10 +46,6 @@ Model beating_ball(Method method, bool poked) {
   return ball.model();
 }
 
-const char* name_of(Method m) {
-  return m == Method::kXpbd ? "xpbd" : m == Method::kExplicit ? "explicit" : "implicit";
-}
-
 class Poke : public ::testing::TestWithParam<Method> {};
 
 TEST_P(Poke, DentsSpreadsAndSettlesBackIntoTheRhythm) {
@@ -82,7 +78,7 @@ TEST_P(Poke, DentsSpreadsAndSettlesBackIntoTheRhythm) {
   advance_to(kPokeStart + 0.05);
   double dent = 0;
   for (int i : patch) dent += (b.x.col(i) - a.x.col(i)).x() / patch.size();
-  EXPECT_LT(dent, -2e-3) << name_of(method) << ": the patch is pushed in by over 2 mm";
+  EXPECT_LT(dent, -2e-3) << method_name(method) << ": the patch is pushed in by over 2 mm";
   const double early = concentration();
   EXPECT_GT(early, 3.0) << "at first the dent is where the poke landed";
 
@@ -97,12 +93,12 @@ TEST_P(Poke, DentsSpreadsAndSettlesBackIntoTheRhythm) {
     advance_to(a.time_s + 1.0 / 60);
     residual = std::max(residual, (b.x - a.x).colwise().norm().maxCoeff());
   }
-  EXPECT_LT(residual, 0.01 * 2 * kRadius) << name_of(method);
+  EXPECT_LT(residual, 0.01 * 2 * kRadius) << method_name(method);
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, Poke,
-                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit),
-                         [](const auto& info) { return std::string(name_of(info.param)); });
+                         ::testing::Values(Method::kXpbd, Method::kExplicit, Method::kImplicit, Method::kProjective),
+                         [](const auto& info) { return std::string(method_name(info.param)); });
 
 }  // namespace
 }  // namespace systole::sim

@@ -13,21 +13,6 @@
 
 namespace systole::sim {
 
-// ---------------------------------------------------------------------------------------
-// State::implicit ownership.
-
-ImplicitScratch::ImplicitScratch() = default;
-ImplicitScratch::~ImplicitScratch() = default;
-ImplicitScratch::ImplicitScratch(const ImplicitScratch& other)
-    : cache_(other.cache_ ? std::make_unique<ImplicitCache>(*other.cache_) : nullptr) {}
-ImplicitScratch& ImplicitScratch::operator=(const ImplicitScratch& other) {
-  if (this != &other) cache_ = other.cache_ ? std::make_unique<ImplicitCache>(*other.cache_) : nullptr;
-  return *this;
-}
-ImplicitScratch::ImplicitScratch(ImplicitScratch&& other) noexcept = default;
-ImplicitScratch& ImplicitScratch::operator=(ImplicitScratch&& other) noexcept = default;
-void ImplicitScratch::reset(std::unique_ptr<ImplicitCache> cache) { cache_ = std::move(cache); }
-
 ImplicitCache::ImplicitCache(const ImplicitCache& o)
     : particles(o.particles),
       springs(o.springs),
@@ -44,6 +29,8 @@ ImplicitCache::ImplicitCache(const ImplicitCache& o)
       last_cg_iterations(o.last_cg_iterations),
       unconverged_solves(o.unconverged_solves) {}
 
+std::unique_ptr<SolverCache> ImplicitCache::clone() const { return std::make_unique<ImplicitCache>(*this); }
+
 // ---------------------------------------------------------------------------------------
 // Kernels.
 
@@ -54,14 +41,13 @@ SpringLinearization linearize_spring(const Eigen::Vector3d& d, const Eigen::Vect
   if (len < 1e-12) return out;
   const Eigen::Vector3d n = d / len;
   // The same expression as forces.cpp, so a body at rest feels exactly zero force.
-  const double tension = k * (len - rest) + c * n.dot(w);
-  out.force_a_N = tension * n;
+  out.force_a_N = k * (len - rest) * n + c * w;
   const Eigen::Matrix3d nn = n * n.transpose();
   // d(k (l - L) n)/dx_b = k n n^T + k (l - L)/l (I - n n^T); the second (geometric) term
   // is negative for a compressed spring, which would make the system indefinite: clamp.
   const double geometric = k * std::max(0.0, 1.0 - rest / len);
   out.stiffness_N_per_m = k * nn + geometric * (Eigen::Matrix3d::Identity() - nn);
-  out.damping_N_s_per_m = c * nn;
+  out.damping_N_s_per_m = c * Eigen::Matrix3d::Identity();
   return out;
 }
 
@@ -139,11 +125,13 @@ std::unique_ptr<ImplicitCache> build_implicit_cache(const Model& model) {
 namespace {
 
 ImplicitCache& cache_for(const Model& model, State& s) {
-  const ImplicitCache* c = s.implicit.get();
+  ImplicitCache* c = s.solver_cache.get<ImplicitCache>();
   if (c == nullptr || c->particles != model.particle_count() || c->springs != model.springs.size()) {
-    s.implicit.reset(build_implicit_cache(model));
+    auto fresh = build_implicit_cache(model);
+    c = fresh.get();
+    s.solver_cache.reset(std::move(fresh));
   }
-  return *s.implicit.get();
+  return *c;
 }
 
 /// Writes M (identity for pinned particles), the springs' h df/dv + h^2 df/dx blocks and
@@ -173,7 +161,7 @@ void assemble(const Model& model, State& s, ImplicitCache& c, double h, double t
     const SpringLinearization lin =
         linearize_spring(s.x.col(b) - s.x.col(a), s.v.col(b) - s.v.col(a), k, k * sp.damping_s[j],
                          driven_rest_length(sp, j, s.region_contraction));
-    // A_aa += B, A_bb += B, A_ab = A_ba -= B with B = h c n n^T + h^2 K (units: kg).
+    // A_aa += B, A_bb += B, A_ab = A_ba -= B with B = h c I + h^2 K (units: kg).
     const Eigen::Matrix3d block = h * lin.damping_N_s_per_m + h2 * lin.stiffness_N_per_m;
     // h f_a + h^2 (df_a/dx_a v_a + df_a/dx_b v_b) = h f_a + h^2 K (v_b - v_a); b opposite.
     const Eigen::Vector3d impulse = h * lin.force_a_N + h2 * lin.stiffness_N_per_m * (s.v.col(b) - s.v.col(a));

@@ -37,8 +37,8 @@ struct SpringLinearization {
   /// positive semidefinite and the system stays SPD for CG (Choi & Ko, "Stable but
   /// Responsive Cloth", SIGGRAPH 2002, §5). unit: N/m
   Eigen::Matrix3d stiffness_N_per_m = Eigen::Matrix3d::Zero();
-  /// df_a/dv_b = c n n^T of the damper along the spring; its position derivative is dropped,
-  /// as Baraff & Witkin do, since it is not symmetric. unit: N s/m
+  /// df_a/dv_b = c I of the isotropic damper (sim/forces.h): constant, so the system's
+  /// damping part is exact at any step. unit: N s/m
   Eigen::Matrix3d damping_N_s_per_m = Eigen::Matrix3d::Zero();
 };
 
@@ -62,7 +62,7 @@ using ImplicitCg = Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::
 
 /// What the implicit solver keeps between steps (owned by State::implicit): the matrix with
 /// its pattern built once, where each 3x3 block's values live, work vectors and the solver.
-struct ImplicitCache {
+struct ImplicitCache : SolverCache {
   int particles = 0;
   int springs = 0;
   Eigen::SparseMatrix<double> matrix;  ///< M - h df/dv - h^2 df/dx, pinned rows identity. unit: kg
@@ -86,6 +86,7 @@ struct ImplicitCache {
   /// re-pointed (compute) every substep anyway.
   ImplicitCache(const ImplicitCache& other);
   ImplicitCache& operator=(const ImplicitCache&) = delete;
+  std::unique_ptr<SolverCache> clone() const override;
 };
 
 /// Builds the sparsity pattern (a 3x3 block per particle and per spring pair, both ways)

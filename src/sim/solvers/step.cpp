@@ -6,6 +6,7 @@
 #include "common/error.h"
 #include "sim/solvers/explicit_euler.h"
 #include "sim/solvers/implicit_euler.h"
+#include "sim/solvers/projective.h"
 #include "sim/solvers/xpbd.h"
 
 namespace systole::sim {
@@ -23,6 +24,9 @@ void step(const Model& model, State& state, double dt_s, const Attachments* coup
       return;
     case Method::kImplicit:
       implicit_step(model, state, dt_s);
+      return;
+    case Method::kProjective:
+      projective_step(model, state, dt_s);
       return;
   }
   throw Error(ExitCode::kInternal, "sim::step: unknown solver method");
@@ -74,6 +78,8 @@ std::string divergence_remedy(const Model& model) {
       return "lower solver.dt (explicit springs need dt < 2 / sqrt(k / m)), or use solver.method: xpbd";
     case Method::kImplicit:
       return "lower solver.dt, or lower the drive amplitude";
+    case Method::kProjective:
+      return "lower solver.dt or raise solver.iterations, or lower the drive amplitude";
   }
   return "lower solver.dt";
 }

@@ -73,6 +73,10 @@ StepLimits step_limits(const Model& m) {
       limits.max_substep_s = limits.max_step_s;
       limits.reason += "; implicit Euler is stable at any step";
       break;
+    case Method::kProjective:
+      limits.max_substep_s = limits.max_step_s;
+      limits.reason += "; projective dynamics is stable at any step";
+      break;
     case Method::kExplicit: {
       const double omega2 = max_omega_squared(m);
       double tau = 0;
@@ -105,6 +109,7 @@ double estimated_cost_s_per_s(const Model& model, double dt_s) {
     case Method::kXpbd: return work * model.substeps / dt_s / 74e6;
     case Method::kExplicit: return work * model.substeps / dt_s / 95e6;
     case Method::kImplicit: return work / dt_s / 0.2e6;
+    case Method::kProjective: return work * model.substeps * model.iterations / dt_s / 5e6;
   }
   return 0;
 }

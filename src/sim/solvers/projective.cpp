@@ -1,0 +1,328 @@
+#include "sim/solvers/projective.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "common/error.h"
+#include "sim/constraints/volume.h"
+#include "sim/forces.h"
+#include "sim/interactions.h"
+#include "sim/solvers/substep.h"
+
+namespace systole::sim {
+namespace {
+
+/// Per free particle one row: x, y, z of a right-hand side (and of the volume gradient).
+/// Row-major, so the triangular solves below update a particle's columns together.
+using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using Ldlt = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+
+/// Solves A X = B in place for the factorized A = P^T L D L^T P, all of B's columns in one
+/// pass over L: Eigen's own solve walks L once per column, which made the back-substitution
+/// most of a step's cost. L is unit lower triangular in compressed columns without its
+/// diagonal (SimplicialLDLT's storage).
+template <int Columns>
+void solve_in_place(const Ldlt& ldlt, Rows& b) {
+  const Eigen::Index n = b.rows();
+  Rows work(n, Columns);
+  const auto& p = ldlt.permutationP();
+  for (Eigen::Index i = 0; i < n; ++i) work.row(p.indices()[i]) = b.row(i);
+  const Eigen::SparseMatrix<double>& l = ldlt.matrixL().nestedExpression();
+  const int* start = l.outerIndexPtr();
+  const int* row = l.innerIndexPtr();
+  const double* value = l.valuePtr();
+  double* w = work.data();
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double* wj = w + Columns * j;
+    for (int q = start[j]; q < start[j + 1]; ++q) {
+      double* wi = w + Columns * row[q];
+      for (int c = 0; c < Columns; ++c) wi[c] -= value[q] * wj[c];
+    }
+  }
+  const auto& d = ldlt.vectorD();
+  for (Eigen::Index j = 0; j < n; ++j) {
+    for (int c = 0; c < Columns; ++c) w[Columns * j + c] /= d[j];
+  }
+  for (Eigen::Index j = n - 1; j >= 0; --j) {
+    double* wj = w + Columns * j;
+    for (int q = start[j]; q < start[j + 1]; ++q) {
+      const double* wi = w + Columns * row[q];
+      for (int c = 0; c < Columns; ++c) wj[c] -= value[q] * wi[c];
+    }
+  }
+  for (Eigen::Index i = 0; i < n; ++i) b.row(i) = work.row(p.indices()[i]);
+}
+
+/// A factorized system matrix for one g = h (backward Euler) or 2h/3 (BDF2) and one set of
+/// active grabs.
+struct Factor {
+  double gamma_s = 0;               ///< unit: s
+  std::vector<bool> grabs_active;   ///< Which grabs' springs are in the matrix.
+  std::unique_ptr<Ldlt> ldlt;
+
+  bool matches(double gamma, const std::vector<bool>& grabs) const {
+    return ldlt && gamma_s == gamma && grabs_active == grabs;
+  }
+};
+
+/// What the solver keeps between steps: the free particles' numbering, the two
+/// factorizations and BDF2's history. Eigen's factorizations do not copy, so a clone keeps
+/// the history and refactorizes on its first step, which gives bit-identical factors.
+struct ProjectiveCache : SolverCache {
+  int particles = 0;
+  int springs = 0;
+  std::vector<int> free_index;  ///< Per particle: its row in the system, or -1 (pinned).
+  std::vector<int> free_particles;
+  Factor backward_euler, bdf2;
+
+  // BDF2's history: the state one step before the current one.
+  Eigen::Matrix3Xd x_old, v_old;
+  double history_time_s = std::numeric_limits<double>::quiet_NaN();  ///< Time of x_old. unit: s
+  double history_step_s = 0;                                         ///< The step taken from it. unit: s
+
+  std::unique_ptr<SolverCache> clone() const override {
+    auto copy = std::make_unique<ProjectiveCache>();
+    copy->particles = particles;
+    copy->springs = springs;
+    copy->free_index = free_index;
+    copy->free_particles = free_particles;
+    copy->x_old = x_old;
+    copy->v_old = v_old;
+    copy->history_time_s = history_time_s;
+    copy->history_step_s = history_step_s;
+    return copy;
+  }
+};
+
+ProjectiveCache& cache_for(const Model& model, State& s) {
+  ProjectiveCache* c = s.solver_cache.get<ProjectiveCache>();
+  if (c != nullptr && c->particles == model.particle_count() && c->springs == model.springs.size()) return *c;
+  auto fresh = std::make_unique<ProjectiveCache>();
+  fresh->particles = model.particle_count();
+  fresh->springs = model.springs.size();
+  fresh->free_index.assign(model.particle_count(), -1);
+  for (int i = 0; i < model.particle_count(); ++i) {
+    if (model.inverse_mass[i] == 0) continue;
+    fresh->free_index[i] = static_cast<int>(fresh->free_particles.size());
+    fresh->free_particles.push_back(i);
+  }
+  c = fresh.get();
+  s.solver_cache.reset(std::move(fresh));
+  return *c;
+}
+
+std::vector<bool> active_grabs(const Model& model, double t_s) {
+  std::vector<bool> active;
+  for (const Grab& g : model.grabs) active.push_back(grab_active(g, t_s));
+  return active;
+}
+
+/// A = M (1/g^2 + drag/g) + sum_e (k_e + c_e/g) G_e^T G_e + k_grab on grabbed particles,
+/// over the free particles (a pinned end's terms move to the right-hand side).
+void factorize(const Model& model, const ProjectiveCache& c, double gamma, const std::vector<bool>& grabs,
+               Factor& out) {
+  const int n = static_cast<int>(c.free_particles.size());
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(n) + 4 * static_cast<std::size_t>(model.springs.size()));
+  for (int r = 0; r < n; ++r) {
+    const double m = 1.0 / model.inverse_mass[c.free_particles[r]];
+    entries.emplace_back(r, r, m * (1.0 / (gamma * gamma) + model.drag_per_s / gamma));
+  }
+  const Springs& sp = model.springs;
+  for (int j = 0; j < sp.size(); ++j) {
+    const double k = 1.0 / sp.compliance_m_per_N[j];
+    const double weight = k + k * sp.damping_s[j] / gamma;
+    const int ra = c.free_index[sp.a[j]], rb = c.free_index[sp.b[j]];
+    if (ra >= 0) entries.emplace_back(ra, ra, weight);
+    if (rb >= 0) entries.emplace_back(rb, rb, weight);
+    if (ra >= 0 && rb >= 0) {
+      entries.emplace_back(ra, rb, -weight);
+      entries.emplace_back(rb, ra, -weight);
+    }
+  }
+  for (std::size_t g = 0; g < model.grabs.size(); ++g) {
+    if (!grabs[g]) continue;
+    for (int i : model.grabs[g].particles) {
+      if (c.free_index[i] >= 0) entries.emplace_back(c.free_index[i], c.free_index[i], 1.0 / model.grabs[g].compliance_m_per_N);
+    }
+  }
+  Eigen::SparseMatrix<double> a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  out.ldlt = std::make_unique<Ldlt>(a);
+  if (out.ldlt->info() != Eigen::Success) {
+    throw Error(ExitCode::kInternal, "projective solver: the system matrix of '" + model.name + "' is not positive definite");
+  }
+  out.gamma_s = gamma;
+  out.grabs_active = grabs;
+}
+
+/// One step's fixed quantities: g, x~ (every particle; pinned ones at their new place) and
+/// the right-hand side's constant part, M x^/g^2 + drag M x~/g + f_ext + the dampers'
+/// c/g G^T G x~ + the pinned ends' (k + c/g) x_pinned.
+struct StepSetup {
+  double gamma = 0;
+  Eigen::Matrix3Xd x_tilde;   ///< unit: m
+  Rows rhs;                   ///< Free particles' rows, 3 columns. unit: N
+};
+
+StepSetup set_up(const Model& model, const State& s, const ProjectiveCache& c, bool bdf2, double h, double t_end,
+                 const Eigen::Matrix3Xd& x_new_pinned) {
+  StepSetup out;
+  Eigen::Matrix3Xd v_bar;
+  if (bdf2) {
+    out.gamma = 2.0 * h / 3.0;
+    out.x_tilde = (4.0 * s.x - c.x_old) / 3.0;
+    v_bar = (4.0 * s.v - c.v_old) / 3.0;
+  } else {
+    out.gamma = h;
+    out.x_tilde = s.x;
+    v_bar = s.v;
+  }
+  const double g = out.gamma;
+  const int n = static_cast<int>(c.free_particles.size());
+  // Pinned particles sit where they will be at the step's end; their x~ is that place too,
+  // so their dampers see them still (as the other solvers do).
+  for (int i = 0; i < model.particle_count(); ++i) {
+    if (c.free_index[i] < 0) out.x_tilde.col(i) = x_new_pinned.col(i);
+  }
+  Eigen::Matrix3Xd f_ext = Eigen::Matrix3Xd::Zero(3, model.particle_count());
+  for_each_poke(model, s.time_s, [&](int i, double factor, const Eigen::Vector3d& force_N) { f_ext.col(i) += factor * force_N; });
+  for (std::size_t k = 0; k < model.grabs.size(); ++k) {
+    const Grab& grab = model.grabs[k];
+    if (!grab_active(grab, t_end)) continue;
+    const Eigen::Vector3d handle = handle_position(grab, t_end);
+    const double stiffness = 1.0 / grab.compliance_m_per_N;
+    for (std::size_t m = 0; m < grab.particles.size(); ++m) f_ext.col(grab.particles[m]) += stiffness * (handle + grab.offsets_m[m]);
+  }
+  out.rhs.resize(n, 3);
+  for (int r = 0; r < n; ++r) {
+    const int i = c.free_particles[r];
+    const double m = 1.0 / model.inverse_mass[i];
+    const Eigen::Vector3d x_hat = out.x_tilde.col(i) + g * v_bar.col(i);
+    out.rhs.row(r) = (m * (x_hat / (g * g) + model.drag_per_s * out.x_tilde.col(i) / g + model.gravity) + f_ext.col(i)).transpose();
+  }
+  const Springs& sp = model.springs;
+  for (int j = 0; j < sp.size(); ++j) {
+    const int a = sp.a[j], b = sp.b[j];
+    const double k = 1.0 / sp.compliance_m_per_N[j];
+    const double c_over_g = k * sp.damping_s[j] / g;
+    const int ra = c.free_index[a], rb = c.free_index[b];
+    const Eigen::Vector3d damping = c_over_g * (out.x_tilde.col(a) - out.x_tilde.col(b));
+    if (ra >= 0) out.rhs.row(ra) += damping.transpose();
+    if (rb >= 0) out.rhs.row(rb) -= damping.transpose();
+    if (ra >= 0 && rb < 0) out.rhs.row(ra) += ((k + c_over_g) * x_new_pinned.col(b)).transpose();
+    if (rb >= 0 && ra < 0) out.rhs.row(rb) += ((k + c_over_g) * x_new_pinned.col(a)).transpose();
+  }
+  return out;
+}
+
+/// The springs' projections: adds k_e G_e^T p_e to the right-hand side, p_e the current
+/// edge scaled to its driven rest length.
+void add_projections(const Model& model, const State& s, const ProjectiveCache& c, const Eigen::Matrix3Xd& x,
+                     Rows& rhs) {
+  const Springs& sp = model.springs;
+  for (int j = 0; j < sp.size(); ++j) {
+    const int a = sp.a[j], b = sp.b[j];
+    const Eigen::Vector3d d = x.col(b) - x.col(a);
+    const double len = d.norm();
+    if (len < 1e-12) continue;  // No direction: the spring pulls nowhere this iteration.
+    const Eigen::Vector3d p = (driven_rest_length(sp, j, s.region_contraction) / (len * sp.compliance_m_per_N[j])) * d;
+    if (c.free_index[a] >= 0) rhs.row(c.free_index[a]) -= p.transpose();
+    if (c.free_index[b] >= 0) rhs.row(c.free_index[b]) += p.transpose();
+  }
+}
+
+/// The volume term's Hessian k_V g g^T, with g = grad V at the step's start (free rows),
+/// and z = A^-1 g for the Sherman-Morrison formula: one three-column solve a step, and
+/// every iteration then solves only for x, y and z.
+struct VolumeHessian {
+  Rows g, z;
+  double g_dot_z = 0;
+};
+
+VolumeHessian volume_hessian(const Model& model, const ProjectiveCache& c, const Factor& factor,
+                             const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& gradient) {
+  VolumeHessian out;
+  if (!model.volume.enabled) return out;
+  volume_and_gradient(x, model.volume.triangles, gradient);
+  const int n = static_cast<int>(c.free_particles.size());
+  out.g.resize(n, 3);
+  for (int r = 0; r < n; ++r) out.g.row(r) = gradient.col(c.free_particles[r]).transpose();
+  out.z = out.g;
+  solve_in_place<3>(*factor.ldlt, out.z);
+  out.g_dot_z = out.g.cwiseProduct(out.z).sum();
+  return out;
+}
+
+/// One local/global iteration from the iterate x (every particle; pinned ones already at
+/// their new place): writes the new free positions into x.
+void iterate(const Model& model, State& s, const ProjectiveCache& c, const Factor& factor, const StepSetup& setup,
+             const VolumeHessian& hessian, double t_end, Eigen::Matrix3Xd& x) {
+  const int n = static_cast<int>(c.free_particles.size());
+  const bool volume = model.volume.enabled;
+  Rows rhs = setup.rhs;
+  add_projections(model, s, c, x, rhs);
+  if (volume) {
+    // A quasi-Newton step on the volume energy k_V/2 (V - V0(t))^2 with the Hessian
+    // k_V g0 g0^T of the step's start (VolumeHessian): (A + k_V g0 g0^T) y = rhs +
+    // k_V g0 (g0.x) - k_V g (V(x) - V0(t)), g = grad V at the iterate x. Its fixed point is
+    // the exact minimizer; g0 only sets how fast the iterations approach it.
+    const double v = volume_and_gradient(x, model.volume.triangles, s.volume_gradient);
+    const double k_v = 1.0 / model.volume.compliance_m5_per_N;
+    const double excess = v - driven_rest_volume(model, t_end);
+    double g0_dot_x = 0;
+    for (int r = 0; r < n; ++r) {
+      const int i = c.free_particles[r];
+      g0_dot_x += hessian.g.row(r).dot(x.col(i).transpose());
+      rhs.row(r) -= (k_v * excess) * s.volume_gradient.col(i).transpose();
+    }
+    rhs += (k_v * g0_dot_x) * hessian.g;
+  }
+  solve_in_place<3>(*factor.ldlt, rhs);
+  if (volume) {
+    // Sherman-Morrison: (A + k g0 g0^T)^-1 b = y - z k (g0.y) / (1 + k g0.z), y = A^-1 b.
+    const double k_v = 1.0 / model.volume.compliance_m5_per_N;
+    rhs -= (k_v * hessian.g.cwiseProduct(rhs).sum() / (1.0 + k_v * hessian.g_dot_z)) * hessian.z;
+  }
+  for (int r = 0; r < n; ++r) x.col(c.free_particles[r]) = rhs.row(r).transpose();
+}
+
+void one_step(const Model& model, State& s, ProjectiveCache& c, double h) {
+  const double t_end = s.time_s + h;
+  update_contractions(model, s, t_end);
+  const bool bdf2 = c.history_step_s == h && std::abs(c.history_time_s + h - s.time_s) <= 1e-9 * h;
+  Eigen::Matrix3Xd x = s.x;
+  move_kinematic_regions(model, t_end, x);
+  const StepSetup setup = set_up(model, s, c, bdf2, h, t_end, x);
+  Factor& factor = bdf2 ? c.bdf2 : c.backward_euler;
+  const std::vector<bool> grabs = active_grabs(model, t_end);
+  if (!factor.matches(setup.gamma, grabs)) factorize(model, c, setup.gamma, grabs, factor);
+  // Start from where the old velocity carries the body: the springs' directions there are
+  // close to the solution's.
+  for (int i : c.free_particles) x.col(i) = s.x.col(i) + h * s.v.col(i);
+  const VolumeHessian hessian = volume_hessian(model, c, factor, s.x, s.volume_gradient);
+  for (int k = 0; k < model.iterations; ++k) iterate(model, s, c, factor, setup, hessian, t_end, x);
+  resolve_floor_contact(model, x);
+  c.x_old = s.x;
+  c.v_old = s.v;
+  c.history_time_s = s.time_s;
+  c.history_step_s = h;
+  for (int i : c.free_particles) s.v.col(i) = (x.col(i) - setup.x_tilde.col(i)) / setup.gamma;
+  s.x_prev = s.x;
+  s.x = x;
+  s.time_s = t_end;
+}
+
+}  // namespace
+
+void projective_step(const Model& model, State& s, double dt_s) {
+  ProjectiveCache& c = cache_for(model, s);
+  const double h = dt_s / model.substeps;
+  for (int sub = 0; sub < model.substeps; ++sub) one_step(model, s, c, h);
+}
+
+}  // namespace systole::sim
