@@ -69,6 +69,21 @@ struct Factor {
   }
 };
 
+/// The volume term's Hessian k_V g g^T, with g = grad V at a recent step's start (free
+/// rows), and z = A^-1 g for the Sherman-Morrison formula. Refreshed every
+/// kVolumeHessianSteps steps (and with the factor): a three-column solve, which at one
+/// iteration a step would otherwise double the step's cost, while g turns by a fraction of
+/// a percent per step as an organ beats.
+struct VolumeHessian {
+  Rows g, z;
+  double g_dot_z = 0;
+  double gamma_s = 0;               ///< The factor z was solved with: its g and grabs. unit: s
+  std::vector<bool> grabs_active;
+  long step = -1;                   ///< The step it was taken at.
+};
+
+inline constexpr long kVolumeHessianSteps = 4;
+
 /// What the solver keeps between steps: the free particles' numbering, the two
 /// factorizations and BDF2's history. Eigen's factorizations do not copy, so a clone keeps
 /// the history and refactorizes on its first step, which gives bit-identical factors.
@@ -78,6 +93,8 @@ struct ProjectiveCache : SolverCache {
   std::vector<int> free_index;  ///< Per particle: its row in the system, or -1 (pinned).
   std::vector<int> free_particles;
   Factor backward_euler, bdf2;
+  VolumeHessian volume;
+  long steps = 0;  ///< Steps taken, counting from the cache's creation.
 
   // BDF2's history: the state one step before the current one.
   Eigen::Matrix3Xd x_old, v_old;
@@ -94,6 +111,8 @@ struct ProjectiveCache : SolverCache {
     copy->v_old = v_old;
     copy->history_time_s = history_time_s;
     copy->history_step_s = history_step_s;
+    copy->volume = volume;  // Valid with the factors the copy rebuilds bit for bit.
+    copy->steps = steps;
     return copy;
   }
 };
@@ -189,7 +208,7 @@ StepSetup set_up(const Model& model, const State& s, const ProjectiveCache& c, b
   for (int i = 0; i < model.particle_count(); ++i) {
     if (c.free_index[i] < 0) out.x_tilde.col(i) = x_new_pinned.col(i);
   }
-  Eigen::Matrix3Xd f_ext = Eigen::Matrix3Xd::Zero(3, model.particle_count());
+  Eigen::Matrix3Xd f_ext = Eigen::Matrix3Xd::Zero(3, model.pokes.empty() && model.grabs.empty() ? 0 : model.particle_count());
   for_each_poke(model, s.time_s, [&](int i, double factor, const Eigen::Vector3d& force_N) { f_ext.col(i) += factor * force_N; });
   for (std::size_t k = 0; k < model.grabs.size(); ++k) {
     const Grab& grab = model.grabs[k];
@@ -203,7 +222,8 @@ StepSetup set_up(const Model& model, const State& s, const ProjectiveCache& c, b
     const int i = c.free_particles[r];
     const double m = 1.0 / model.inverse_mass[i];
     const Eigen::Vector3d x_hat = out.x_tilde.col(i) + g * v_bar.col(i);
-    out.rhs.row(r) = (m * (x_hat / (g * g) + model.drag_per_s * out.x_tilde.col(i) / g + model.gravity) + f_ext.col(i)).transpose();
+    out.rhs.row(r) = (m * (x_hat / (g * g) + model.drag_per_s * out.x_tilde.col(i) / g + model.gravity)).transpose();
+    if (f_ext.cols() > 0) out.rhs.row(r) += f_ext.col(i).transpose();
   }
   const Springs& sp = model.springs;
   for (int j = 0; j < sp.size(); ++j) {
@@ -236,26 +256,22 @@ void add_projections(const Model& model, const State& s, const ProjectiveCache& 
   }
 }
 
-/// The volume term's Hessian k_V g g^T, with g = grad V at the step's start (free rows),
-/// and z = A^-1 g for the Sherman-Morrison formula: one three-column solve a step, and
-/// every iteration then solves only for x, y and z.
-struct VolumeHessian {
-  Rows g, z;
-  double g_dot_z = 0;
-};
-
-VolumeHessian volume_hessian(const Model& model, const ProjectiveCache& c, const Factor& factor,
-                             const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& gradient) {
-  VolumeHessian out;
-  if (!model.volume.enabled) return out;
+/// Brings c.volume up to date for this step with `factor` (see VolumeHessian).
+void refresh_volume_hessian(const Model& model, ProjectiveCache& c, const Factor& factor, const Eigen::Matrix3Xd& x,
+                            Eigen::Matrix3Xd& gradient) {
+  VolumeHessian& v = c.volume;
+  const bool fresh = v.step >= 0 && factor.matches(v.gamma_s, v.grabs_active) && c.steps - v.step < kVolumeHessianSteps;
+  if (!model.volume.enabled || fresh) return;
   volume_and_gradient(x, model.volume.triangles, gradient);
   const int n = static_cast<int>(c.free_particles.size());
-  out.g.resize(n, 3);
-  for (int r = 0; r < n; ++r) out.g.row(r) = gradient.col(c.free_particles[r]).transpose();
-  out.z = out.g;
-  solve_in_place<3>(*factor.ldlt, out.z);
-  out.g_dot_z = out.g.cwiseProduct(out.z).sum();
-  return out;
+  v.g.resize(n, 3);
+  for (int r = 0; r < n; ++r) v.g.row(r) = gradient.col(c.free_particles[r]).transpose();
+  v.z = v.g;
+  solve_in_place<3>(*factor.ldlt, v.z);
+  v.g_dot_z = v.g.cwiseProduct(v.z).sum();
+  v.gamma_s = factor.gamma_s;
+  v.grabs_active = factor.grabs_active;
+  v.step = c.steps;
 }
 
 /// One local/global iteration from the iterate x (every particle; pinned ones already at
@@ -304,13 +320,14 @@ void one_step(const Model& model, State& s, ProjectiveCache& c, double h) {
   // Start from where the old velocity carries the body: the springs' directions there are
   // close to the solution's.
   for (int i : c.free_particles) x.col(i) = s.x.col(i) + h * s.v.col(i);
-  const VolumeHessian hessian = volume_hessian(model, c, factor, s.x, s.volume_gradient);
-  for (int k = 0; k < model.iterations; ++k) iterate(model, s, c, factor, setup, hessian, t_end, x);
+  refresh_volume_hessian(model, c, factor, s.x, s.volume_gradient);
+  for (int k = 0; k < model.iterations; ++k) iterate(model, s, c, factor, setup, c.volume, t_end, x);
   resolve_floor_contact(model, x);
   c.x_old = s.x;
   c.v_old = s.v;
   c.history_time_s = s.time_s;
   c.history_step_s = h;
+  ++c.steps;
   for (int i : c.free_particles) s.v.col(i) = (x.col(i) - setup.x_tilde.col(i)) / setup.gamma;
   s.x_prev = s.x;
   s.x = x;
