@@ -27,10 +27,10 @@ inline const char* method_name(SolverMethod m) {
 }
 
 struct Solver {
-  SolverMethod method = SolverMethod::kXpbd;
+  SolverMethod method = SolverMethod::kProjective;
   bool auto_dt = false;        ///< Choose dt from the drive and stiffness (sim core issue).
-  double dt_s = 1.0 / 240.0;   ///< Step size. unit: s
-  int substeps = 4;            ///< Substeps per step (XPBD, explicit, projective). unit: 1
+  double dt_s = 1.0 / 60.0;    ///< Step size. unit: s
+  int substeps = 1;            ///< Substeps per step (XPBD, explicit, projective). unit: 1
   int iterations = 2;          ///< Projective: local/global iterations per substep. unit: 1
   int threads = 1;             ///< Threads for the simulation's spring loops; the result is the same at any count.
   Origin origin;

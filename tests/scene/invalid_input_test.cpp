@@ -87,7 +87,7 @@ TEST(SceneInvalid, WrongTypesSayWhatWasExpected) {
   f = load_error(with_organ_keys("    regions: [{name: lv, pinned: maybe}]\n"));
   EXPECT_NE(f.message.find("pinned: expected true or false; got \"maybe\""), std::string::npos) << f.message;
   f = load_error(std::string(kMinimalOrgans) + "solver: {method: rk4}\n");
-  EXPECT_NE(f.message.find("solver.method: expected one of xpbd, explicit, implicit; got \"rk4\""), std::string::npos)
+  EXPECT_NE(f.message.find("solver.method: expected one of xpbd, explicit, implicit, projective; got \"rk4\""), std::string::npos)
       << f.message;
   f = load_error(std::string(kMinimalOrgans) + "camera: {up: [0, 1]}\n");
   EXPECT_NE(f.message.find("camera.up: expected a list of 3 numbers"), std::string::npos) << f.message;

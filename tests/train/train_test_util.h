@@ -46,7 +46,7 @@ inline std::string ball_scene(const std::string& top_drive, const std::string& b
          "      - {name: top, select: {half_space: {normal: [0, 1, 0]}}, drive: " + top_drive + extra_region_keys + "}\n"
          "      - {name: bottom, select: {half_space: {normal: [0, -1, 0], point: [0, -0.0001, 0]}}, drive: " + bottom_drive + "}\n" +
          target +
-         "solver: {dt: 1/120 s, substeps: 2}\n"
+         "solver: {method: xpbd, dt: 1/120 s, substeps: 2}\n"
          "output: {width: 64, height: 48, fps: 30, duration: 1 s}\n";
 }
 

@@ -440,7 +440,8 @@ ValueSpec<Body> body_spec() {
       field("stiffness", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Body::stiffness_N_per_m,
             "Spring stiffness of each surface edge."),
       field("damping", quantity(Dimension::kTime, closed(0, 1)), &Body::damping_s,
-            "Stiffness-proportional damping time (c = k damping)."),
+            "Stiffness-proportional damping time: each spring damps the whole relative velocity of its "
+            "ends with c = k damping (docs/accuracy.md)."),
       field("volume_stiffness", quantity(Dimension::kPressure, closed(0, 1e9)), &Body::volume_stiffness_Pa,
             "Bulk modulus of the enclosed volume; 0 = no volume constraint."),
       field("drag", quantity(Dimension::kRate, closed(0, 1000)), &Body::drag_per_s,
@@ -449,7 +450,8 @@ ValueSpec<Body> body_spec() {
             "Stiffness of the springs across each edge, which resist folding; 0 = none."),
       field("lattice", whole<int>(0, 64), &Body::lattice,
             "Reduced model: voxels along the organ's longest side; their corners carry the motion and "
-            "the mesh follows (docs/accuracy.md). 0 = full model, every vertex a particle."),
+            "the mesh follows. Coarse: narrow regions lose much of their motion (docs/accuracy.md); "
+            "a lower mesh.detail is the accurate way to save time. 0 = full model, every vertex a particle."),
       field("volume_drive", drive_spec(), &Body::volume_drive,
             "Drives the rest volume instead of rest lengths: V0(t) = V0 (1 + amplitude phi(t - delay)), "
             "`amplitude` the fraction of volume added (lungs inflating). Needs `volume_stiffness` > 0 "

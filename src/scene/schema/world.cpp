@@ -11,7 +11,7 @@ ValueSpec<Solver> solver_spec() {
   const Range dt_range = open_closed(0, 0.1);
   Field<Solver> dt{KeySpec{"dt",
                            "time or `auto`",
-                           "1/240 s",
+                           "1/60 s",
                            dt_range.text("s") + ", or `auto`",
                            "Step size; `auto` lets the solver choose from the drive and stiffness.",
                            {}},
