@@ -55,7 +55,7 @@ TEST(Recovery, TunedDrivesComeBackToTheKnownOnesAndTheErrorToTheFloor) {
   const std::string bottom = "{waveform: fourier, rate: 1 Hz, amplitude: 0.08, delay: 0.55 s, harmonics: [{amplitude: 0.5}]}";
   const std::string frames = write_truth_frames(dir, ball_scene(top, bottom, ""));
 
-  const std::string target = "    target:\n      rate: 1 Hz\n      harmonics: 1\n      lock: [stiffness]\n      budget: 200\n" + frames;
+  const std::string target = "    target:\n      rate: 1 Hz\n      harmonics: 1\n      lock: [stiffness]\n      budget: 600\n" + frames;
   write_text(dir / "tune.yaml",
              ball_scene("{waveform: sine, rate: 1 Hz, amplitude: 0.07, delay: 0.35 s}",
                         "{waveform: sine, rate: 1 Hz, amplitude: 0.12, delay: 0.3 s}", target));
