@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "sim/drive.h"
 
@@ -29,6 +30,25 @@ double max_contraction_rate_per_s(const Model& m) {
     }
   }
   return fastest;
+}
+
+/// The shortest damping time of a particle, m / (c summed over its springs), over the free
+/// particles: XPBD's one Gauss-Seidel pass per substep carries the dampers correctly only
+/// for substeps below it (docs/accuracy.md: on a heart-like body 8 % of the motion at 0.8
+/// of it, 26 % at 3 times it). unit: s
+double shortest_damping_time_s(const Model& m) {
+  Eigen::VectorXd c_sum = Eigen::VectorXd::Zero(m.particle_count());
+  const Springs& sp = m.springs;
+  for (int j = 0; j < sp.size(); ++j) {
+    const double c = sp.damping_s[j] / sp.compliance_m_per_N[j];
+    c_sum[sp.a[j]] += c;
+    c_sum[sp.b[j]] += c;
+  }
+  double shortest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < m.particle_count(); ++i) {
+    if (m.inverse_mass[i] > 0 && c_sum[i] > 0) shortest = std::min(shortest, 1.0 / (m.inverse_mass[i] * c_sum[i]));
+  }
+  return shortest;
 }
 
 }  // namespace
@@ -97,6 +117,15 @@ StepLimits step_limits(const Model& m) {
       std::snprintf(text, sizeof text, "; rest lengths change up to %.3g%%/s, <= %.2g%% per substep needs >= %.0f substeps/s",
                     100 * max_contraction_rate_per_s(m), 100 * kMaxContractionPerSubstep, rate);
       limits.reason += text;
+      // Its dampers, one Gauss-Seidel pass each substep, are accurate only for substeps up
+      // to the particles' damping time m / c.
+      const double damping_s = shortest_damping_time_s(m);
+      if (damping_s < limits.max_substep_s) {
+        limits.max_substep_s = damping_s;
+        std::snprintf(text, sizeof text, "; dampers with a %.3g us damping time need substeps <= %.3g us",
+                      1e6 * damping_s, 1e6 * limits.max_substep_s);
+        limits.reason += text;
+      }
       break;
     }
   }
@@ -109,7 +138,7 @@ double estimated_cost_s_per_s(const Model& model, double dt_s) {
     case Method::kXpbd: return work * model.substeps / dt_s / 74e6;
     case Method::kExplicit: return work * model.substeps / dt_s / 95e6;
     case Method::kImplicit: return work / dt_s / 0.2e6;
-    case Method::kProjective: return work * model.substeps * model.iterations / dt_s / 5e6;
+    case Method::kProjective: return work * model.substeps * (model.iterations + 1) / dt_s / 50e6;
   }
   return 0;
 }

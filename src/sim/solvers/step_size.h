@@ -20,7 +20,8 @@ struct StepLimits {
 ///  - explicit: symplectic Euler is stable for h^2 w^2 + 2 h tau w^2 <= 4 on the stiffest
 ///    mode (w from a Gershgorin bound on M^-1 K, tau the damping time), with a 0.8 margin;
 ///  - xpbd: stable at any substep, with an error that grows with how far the constraints'
-///    targets move per substep: rest lengths may change by at most 0.5% per substep;
+///    targets move per substep (rest lengths may change by at most 0.5% per substep) and
+///    with the substep against the particles' damping time m / c (at most that);
 ///  - implicit: unconditionally stable; one substep per step.
 StepLimits step_limits(const Model& model);
 
@@ -32,7 +33,8 @@ double max_omega_squared(const Model& model);
 /// springs (and volume triangles, each counted as a spring) times the solver's steps,
 /// at the throughputs bench/sim_bench measured on the development machine (XPBD ~74 M,
 /// explicit ~95 M spring updates per second; implicit ~0.2 M springs per second per step,
-/// its conjugate-gradient solve). For `validate`; `systole bench` measures. unit: s/s
+/// its conjugate-gradient solve; projective ~50 M per iteration, plus one for the step's
+/// set-up, on the shipped heart). For `validate`; `systole bench` measures. unit: s/s
 double estimated_cost_s_per_s(const Model& model, double dt_s);
 
 /// Highest drive frequency of any region. unit: Hz
