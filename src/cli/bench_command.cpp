@@ -1,5 +1,6 @@
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli/command.h"
 #include "common/error.h"
@@ -18,10 +19,20 @@ struct BenchArgs {
   std::string output;
   double duration_s = 0;
   std::vector<std::string> methods, dts;
-  std::vector<int> substeps, lattices;
+  std::vector<int> substeps, lattices, iterations;
+  std::string reference_method = "projective";
   std::string reference_dt = "1/960";
-  int reference_substeps = 32;
+  int reference_substeps = 1;
+  std::string check = "explicit:auto";
 };
+
+scene::SolverMethod parse_method(const std::string& m) {
+  for (const auto method : {scene::SolverMethod::kProjective, scene::SolverMethod::kXpbd, scene::SolverMethod::kImplicit,
+                            scene::SolverMethod::kExplicit}) {
+    if (m == scene::method_name(method)) return method;
+  }
+  throw Error(ExitCode::kUsage, "expected a solver method (projective, xpbd, implicit, explicit); got '" + m + "'");
+}
 
 /// A step as "1/240", "0.004" (seconds) or "auto" (0: the solver's stable step).
 double parse_step(const std::string& text) {
@@ -51,19 +62,31 @@ double parse_step(const std::string& text) {
 /// The grid the --method, --dt, --substeps and --lattice lists narrow to (unnamed lists: their default).
 std::vector<study::BenchConfig> narrowed_grid(const BenchArgs& o) {
   std::vector<scene::SolverMethod> methods;
-  for (const auto& m : o.methods) {
-    methods.push_back(m == "xpbd" ? scene::SolverMethod::kXpbd
-                      : m == "implicit" ? scene::SolverMethod::kImplicit
-                                        : scene::SolverMethod::kExplicit);
-  }
+  for (const auto& m : o.methods) methods.push_back(parse_method(m));
   if (methods.empty()) {
-    methods = {scene::SolverMethod::kXpbd, scene::SolverMethod::kImplicit, scene::SolverMethod::kExplicit};
+    methods = {scene::SolverMethod::kProjective, scene::SolverMethod::kXpbd, scene::SolverMethod::kImplicit};
   }
   std::vector<double> dts;
   for (const auto& d : o.dts) dts.push_back(parse_step(d));
-  if (dts.empty()) dts = {1.0 / 240.0};
-  return study::grid_of(methods, dts, o.substeps.empty() ? std::vector<int>{4} : o.substeps,
-                      o.lattices.empty() ? std::vector<int>{0} : o.lattices);
+  if (dts.empty()) dts = {1.0 / 60.0};
+  return study::grid_of(methods, dts, o.substeps.empty() ? std::vector<int>{1} : o.substeps,
+                        o.lattices.empty() ? std::vector<int>{0} : o.lattices,
+                        o.iterations.empty() ? std::vector<int>{2} : o.iterations);
+}
+
+/// --check: "none", or METHOD:STEP[:SUBSTEPS] such as explicit:auto or implicit:1/960.
+std::optional<study::BenchConfig> parse_check(const std::string& text) {
+  if (text == "none") return std::nullopt;
+  const auto first = text.find(':');
+  if (first == std::string::npos) {
+    throw Error(ExitCode::kUsage, "--check: expected none or METHOD:STEP[:SUBSTEPS] (explicit:auto); got '" + text + "'");
+  }
+  const auto second = text.find(':', first + 1);
+  study::BenchConfig c;
+  c.method = parse_method(text.substr(0, first));
+  c.dt_s = parse_step(text.substr(first + 1, second == std::string::npos ? std::string::npos : second - first - 1));
+  c.substeps = second == std::string::npos ? 1 : std::stoi(text.substr(second + 1));
+  return c;
 }
 
 }  // namespace
@@ -77,26 +100,38 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "Prefix of the outputs: PREFIX.csv and PREFIX.png (default out/<scene>-bench)");
   cmd->add_option("--duration", o->duration_s, "Simulated seconds per run (default: whole beats covering 2 s)")
       ->check(CLI::Range(0.1, 60.0));
-  cmd->add_option("--method", o->methods, "Narrow the grid: solvers (xpbd, implicit, explicit)")
-      ->check(CLI::IsMember({"xpbd", "implicit", "explicit"}))
+  cmd->add_option("--method", o->methods, "Narrow the grid: solvers (projective, xpbd, implicit, explicit)")
+      ->check(CLI::IsMember({"projective", "xpbd", "implicit", "explicit"}))
       ->delimiter(',');
   cmd->add_option("--dt", o->dts, "Narrow the grid: steps (1/240, 0.004, auto)")->delimiter(',');
-  cmd->add_option("--substeps", o->substeps, "Narrow the grid: XPBD substeps")->check(CLI::Range(1, 1000))->delimiter(',');
+  cmd->add_option("--substeps", o->substeps, "Narrow the grid: substeps per step")->check(CLI::Range(1, 10000))->delimiter(',');
+  cmd->add_option("--iterations", o->iterations, "Narrow the grid: projective iterations per step")
+      ->check(CLI::Range(1, 50))
+      ->delimiter(',');
   cmd->add_option("--lattice", o->lattices, "Narrow the grid: models (0 = full, N = lattice of N voxels along the longest side)")
       ->check(CLI::Range(0, 64))
       ->delimiter(',');
-  cmd->add_option("--reference-dt", o->reference_dt, "Step of the reference run")->capture_default_str();
-  cmd->add_option("--reference-substeps", o->reference_substeps, "XPBD substeps of the reference run")
-      ->check(CLI::Range(1, 10000))
+  cmd->add_option("--reference-method", o->reference_method, "Solver of the reference run (full model)")
+      ->check(CLI::IsMember({"projective", "xpbd", "implicit", "explicit"}))
+      ->capture_default_str();
+  cmd->add_option("--reference-dt", o->reference_dt, "Step of the reference run (or auto); bench halves it to prove it")
+      ->capture_default_str();
+  cmd->add_option("--reference-substeps", o->reference_substeps, "Substeps of the reference run")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--check", o->check,
+                  "The second solver that must reach the reference's motion: METHOD:STEP[:SUBSTEPS], or none")
       ->capture_default_str();
   return {cmd, [o] {
             const auto scene = scene::load(o->scene, o->defines);
             study::BenchOptions options;
             options.duration_s = o->duration_s;
-            options.reference_dt_s = parse_step(o->reference_dt);
-            options.reference_substeps = o->reference_substeps;
-            if (options.reference_dt_s == 0) throw Error(ExitCode::kUsage, "--reference-dt needs a step, not auto");
-            if (!o->methods.empty() || !o->dts.empty() || !o->substeps.empty() || !o->lattices.empty()) {
+            options.reference.method = parse_method(o->reference_method);
+            options.reference.dt_s = parse_step(o->reference_dt);
+            options.reference.substeps = o->reference_substeps;
+            options.check = parse_check(o->check);
+            if (!o->methods.empty() || !o->dts.empty() || !o->substeps.empty() || !o->lattices.empty() ||
+                !o->iterations.empty()) {
               options.grid = narrowed_grid(*o);
             }
             const study::BenchReport report =
