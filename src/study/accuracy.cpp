@@ -33,8 +33,8 @@ std::string step_text(double dt_s) {
 }
 
 /// A periodically driven region of the render meshes: its vertices in the stacked
-/// positions and its drive's rate. Ramped or irregular drives are not periodic and have
-/// no beat to compare.
+/// positions and its drive's rate (an organ with a volume drive counts as one such region).
+/// Ramped or irregular drives are not periodic and have no beat to compare.
 struct DrivenRegion {
   std::string name;        ///< "heart.left_atrium"
   std::vector<int> vertices;  ///< Indices into the stacked render positions.
@@ -61,6 +61,14 @@ std::vector<DrivenRegion> driven_regions(const scene::Scene& scene, const world:
         if (geometry.vertex_region[v] == static_cast<int>(r)) region.vertices.push_back(offset + static_cast<int>(v));
       }
       if (!region.vertices.empty()) out.push_back(std::move(region));
+    }
+    const scene::Drive& v = scene.organs[o].body.volume_drive;
+    if (v.waveform != scene::Waveform::kNone && v.rate_hz > 0 && v.irregularity == 0 &&
+        (v.rate_end_hz == 0 || v.rate_end_hz == v.rate_hz)) {
+      // A volume drive beats the whole organ: its region is every vertex.
+      DrivenRegion whole{scene.organs[o].name + ".volume_drive", {}, centre, v.rate_hz};
+      for (std::size_t k = 0; k < rest.size(); ++k) whole.vertices.push_back(offset + static_cast<int>(k));
+      out.push_back(std::move(whole));
     }
     offset += static_cast<int>(rest.size());
   }
