@@ -58,8 +58,9 @@ Command add_tune_command(CLI::App& app) {
             if (!o->report.empty()) train::write_report(o->report, o->scene, tunings);
             out.commit();
             for (const auto& t : tunings) {
-              std::cout << t.organ << ": RMS error " << t.before.rms_percent << " % fitted -> " << t.after.rms_percent
-                        << " % tuned (as written " << t.written.rms_percent << " %), " << t.generations << " generations, "
+              std::cout << t.organ << ": RMS error " << t.before.rms_pct_of_motion << " % of the target's motion fitted -> "
+                        << t.after.rms_pct_of_motion << " % tuned (as written " << t.written.rms_pct_of_motion << " %), "
+                        << t.generations << " generations, "
                         << t.evaluations << " playbacks, " << t.seconds << " s\n";
             }
             std::cout << "wrote " << o->output << (o->report.empty() ? "" : " and " + o->report + "/report.md") << "\n";

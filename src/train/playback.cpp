@@ -5,10 +5,20 @@
 #include <numbers>
 
 #include "sim/from_scene.h"
+#include "sim/motion_error.h"
 #include "sim/solvers/step.h"
 #include "world/world.h"
 
 namespace systole::train {
+namespace {
+
+/// `error_m` as a % of `motion_m`; a target that does not move is matched only exactly.
+double share_of(double error_m, double motion_m) {
+  if (motion_m > 0) return 100.0 * error_m / motion_m;
+  return error_m > 0 ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+}  // namespace
 
 Problem make_problem(const scene::Scene& scene, std::size_t organ_index) {
   scene::Scene alone = scene;
@@ -31,6 +41,20 @@ Problem make_problem(const scene::Scene& scene, std::size_t organ_index) {
     p.target_volume_m3.push_back(p.model.volume.enabled ? sim::enclosed_volume(x, p.model.volume.triangles) : 0.0);
     const std::vector<double> sizes = region_sizes(p.model, x);
     for (std::size_t r = 0; r < sizes.size(); ++r) p.target_size[r].push_back(sizes[r]);
+  }
+  p.target_motion_m = sim::rms_motion_m(p.target_at_step);
+  p.target_region_motion_m.assign(p.model.regions.size(), 0.0);
+  for (std::size_t r = 0; r < p.model.regions.size(); ++r) {
+    std::vector<Eigen::Index> members;
+    for (std::size_t i = 0; i < p.model.vertex_region.size(); ++i) {
+      if (p.model.vertex_region[i] == static_cast<int>(r)) members.push_back(static_cast<Eigen::Index>(i));
+    }
+    if (members.empty()) continue;
+    sim::Trajectory region(p.target_at_step.size(), Eigen::Matrix3Xd(3, members.size()));
+    for (std::size_t k = 0; k < region.size(); ++k) {
+      for (std::size_t m = 0; m < members.size(); ++m) region[k].col(m) = p.target_at_step[k].col(members[m]);
+    }
+    p.target_region_motion_m[r] = sim::rms_motion_m(region);
   }
   return p;
 }
@@ -78,8 +102,9 @@ PlaybackError play(const Problem& problem, const sim::Model& model) {
   sim::State state = sim::initial_state(model);
   auto blew_up = [&] {
     e.diverged = true;
-    e.rms_percent = e.max_percent = e.volume_percent = std::numeric_limits<double>::infinity();
-    for (auto& r : e.regions) r.rms_percent = std::numeric_limits<double>::infinity();
+    e.rms_pct_of_motion = e.rms_pct_of_diagonal = e.max_pct_of_diagonal = e.volume_percent =
+        std::numeric_limits<double>::infinity();
+    for (auto& r : e.regions) r.rms_pct_of_motion = std::numeric_limits<double>::infinity();
     return e;
   };
   for (int k = 0; k < problem.settle_steps; ++k) sim::step(model, state, problem.dt_s);
@@ -94,7 +119,7 @@ PlaybackError play(const Problem& problem, const sim::Model& model) {
     for (Eigen::Index i = 0; i < state.x.cols(); ++i) {
       const double d2 = (state.x.col(i) - target.col(i)).squaredNorm();
       sq += d2;
-      e.max_percent = std::max(e.max_percent, d2);
+      e.max_pct_of_diagonal = std::max(e.max_pct_of_diagonal, d2);
       const int r = model.vertex_region.empty() ? -1 : model.vertex_region[i];
       if (r >= 0) region_sq[r] += d2, ++region_count[r];
     }
@@ -110,15 +135,19 @@ PlaybackError play(const Problem& problem, const sim::Model& model) {
 
   const double to_percent = 100.0 / model.rest_extent_m;
   const double samples = double(problem.measure_steps) * double(state.x.cols());
-  e.rms_percent = std::sqrt(sq / samples) * to_percent;
-  e.max_percent = std::sqrt(e.max_percent) * to_percent;
+  const double rms_m = std::sqrt(sq / samples);
+  e.rms_pct_of_diagonal = rms_m * to_percent;
+  e.rms_pct_of_motion = share_of(rms_m, problem.target_motion_m);
+  e.max_pct_of_diagonal = std::sqrt(e.max_pct_of_diagonal) * to_percent;
   if (model.volume.enabled && mean_volume > 0) {
     mean_volume /= problem.measure_steps;
     e.volume_percent = std::sqrt(volume_sq / problem.measure_steps) / mean_volume * 100.0;
   }
   const double t0 = problem.measure_start_s() + problem.dt_s;
   for (std::size_t r = 0; r < regions; ++r) {
-    if (region_count[r] > 0) e.regions[r].rms_percent = std::sqrt(region_sq[r] / region_count[r]) * to_percent;
+    if (region_count[r] > 0) {
+      e.regions[r].rms_pct_of_motion = share_of(std::sqrt(region_sq[r] / region_count[r]), problem.target_region_motion_m[r]);
+    }
     const double played = first_harmonic_phase(e.size[r], t0, problem.dt_s, problem.rate_hz);
     const double wanted = first_harmonic_phase(problem.target_size[r], t0, problem.dt_s, problem.rate_hz);
     e.regions[r].phase_deg = std::remainder(played - wanted, 2.0 * std::numbers::pi) * 180.0 / std::numbers::pi;

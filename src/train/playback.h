@@ -25,6 +25,10 @@ struct Problem {
   /// Per region and measured step: the target's region size (RMS distance of its vertices
   /// from their centroid) relative to rest. unit: 1
   std::vector<std::vector<double>> target_size;
+  /// The target's RMS motion about its mean shape over the measured steps (sim/motion_error.h):
+  /// what every error is a share of. Per region the same over the region's vertices. unit: m
+  double target_motion_m = 0;
+  std::vector<double> target_region_motion_m;
 
   double measure_start_s() const { return settle_steps * dt_s; }
 };
@@ -37,14 +41,19 @@ Problem make_problem(const scene::Scene& scene, std::size_t organ_index);
 std::vector<double> region_sizes(const sim::Model& model, const Eigen::Matrix3Xd& x);
 
 struct RegionError {
-  double rms_percent = 0;   ///< RMS vertex error of the region, % of the organ's bounding diagonal.
-  double phase_deg = 0;     ///< Phase of the region size's first harmonic, played minus target. unit: deg
+  double rms_pct_of_motion = 0;  ///< RMS vertex error of the region, % of the region's target motion.
+  double phase_deg = 0;          ///< Phase of the region size's first harmonic, played minus target. unit: deg
 };
 
+/// How far a playback is from the target. The main figure is a share of the target's motion
+/// (a motionless organ in the target's mean shape scores 100 %); the diagonal-relative ones
+/// are kept beside it, and the search minimizes rms_pct_of_diagonal - a fixed multiple of the
+/// main figure for one target, so the same optimum, with the tuner's tolerances unchanged.
 struct PlaybackError {
-  double rms_percent = 0;     ///< RMS vertex error over vertices and time, % of the bounding diagonal.
-  double max_percent = 0;     ///< Largest vertex error at any time, % of the bounding diagonal.
-  double volume_percent = 0;  ///< RMS enclosed-volume error, % of the target's mean volume.
+  double rms_pct_of_motion = 0;    ///< RMS vertex error over vertices and time, % of the target's RMS motion.
+  double rms_pct_of_diagonal = 0;  ///< The same error, % of the bounding diagonal.
+  double max_pct_of_diagonal = 0;  ///< Largest vertex error at any time, % of the bounding diagonal.
+  double volume_percent = 0;       ///< RMS enclosed-volume error, % of the target's mean volume.
   std::vector<RegionError> regions;
   std::vector<std::vector<double>> size;  ///< Per region and measured step, as Problem::target_size.
   bool diverged = false;      ///< The body blew up: every error is then infinite.

@@ -21,6 +21,11 @@ std::string fixed(double v, int digits = 3) {
   return s.str();
 }
 
+std::string error_row(const std::string& drives, const PlaybackError& e) {
+  return "| " + drives + " | " + fixed(e.rms_pct_of_motion, 2) + " | " + fixed(e.rms_pct_of_diagonal) + " | " +
+         fixed(e.max_pct_of_diagonal) + " | " + fixed(e.volume_percent) + " |\n";
+}
+
 void write_text(const std::filesystem::path& path, const std::string& text) {
   AtomicOutput out(path);
   {
@@ -37,22 +42,25 @@ std::string report_markdown(const std::string& scene_path, const std::vector<Org
   std::ostringstream o;
   o << "# Tuning report: " << scene_path << "\n\n"
     << "Errors are measured with the body running free (no coupling) over the measured cycles, "
-       "after the settling ones: vertex errors in % of the organ's bounding diagonal, volume error "
+       "after the settling ones. The RMS vertex error is a share of the target's RMS motion about its "
+       "mean shape (an organ held still in that shape scores 100 %), per region of the region's; it is "
+       "also given in % of the organ's bounding diagonal, with the largest vertex error. Volume error "
        "in % of the target's mean volume, phase of each region's size (first harmonic) in degrees.\n\n";
   for (const OrganTuning& t : tunings) {
     o << "## " << t.organ << "\n\n"
-      << "| drives | RMS % | max % | volume % |\n|---|---|---|---|\n"
-      << "| as written | " << fixed(t.written.rms_percent) << " | " << fixed(t.written.max_percent) << " | " << fixed(t.written.volume_percent) << " |\n"
-      << "| fitted from forces (untuned) | " << fixed(t.before.rms_percent) << " | " << fixed(t.before.max_percent) << " | " << fixed(t.before.volume_percent) << " |\n"
-      << "| tuned | " << fixed(t.after.rms_percent) << " | " << fixed(t.after.max_percent) << " | " << fixed(t.after.volume_percent) << " |\n\n"
+      << "The target moves by " << fixed(1e3 * t.target_motion_m, 3) << " mm RMS about its mean shape.\n\n"
+      << "| drives | RMS % of motion | RMS % of diagonal | max % of diagonal | volume % |\n|---|---|---|---|---|\n"
+      << "| held still in the target's mean shape | 100.00 | " << fixed(t.target_motion_pct_of_diagonal) << " | | |\n"
+      << error_row("as written", t.written) << error_row("fitted from forces (untuned)", t.before)
+      << error_row("tuned", t.after) << "\n"
       << t.parameters.size() << " free parameters; " << t.generations << " CMA-ES generations, " << t.evaluations
       << " playbacks, " << fixed(t.seconds, 1) << " s wall time; stopped: " << t.stop_reason
       << ". Mean coupling force while recording: " << fixed(t.mean_coupling_force_N, 5) << " N per particle.\n\n"
-      << "| region | RMS % fitted | RMS % tuned | phase deg fitted | phase deg tuned | plot |\n|---|---|---|---|---|---|\n";
+      << "| region | RMS % of its motion, fitted | tuned | phase deg fitted | phase deg tuned | plot |\n|---|---|---|---|---|---|\n";
     for (std::size_t r = 0; r < t.regions.size(); ++r) {
       const scene::Region& region = t.regions[r];
       if (region.pinned) continue;
-      o << "| " << region.name << " | " << fixed(t.before.regions[r].rms_percent) << " | " << fixed(t.after.regions[r].rms_percent) << " | "
+      o << "| " << region.name << " | " << fixed(t.before.regions[r].rms_pct_of_motion) << " | " << fixed(t.after.regions[r].rms_pct_of_motion) << " | "
         << fixed(t.before.regions[r].phase_deg, 1) << " | " << fixed(t.after.regions[r].phase_deg, 1) << " | ![" << region.name << "]("
         << plot_name(t, region) << ") |\n";
     }

@@ -96,7 +96,8 @@ std::vector<Parameter> free_parameters(const scene::Organ& organ, const std::vec
 std::string format_error(const PlaybackError& e) {
   std::ostringstream s;
   s.precision(3);
-  s << "RMS " << e.rms_percent << " %, max " << e.max_percent << " %, volume " << e.volume_percent << " %";
+  s << "RMS " << e.rms_pct_of_motion << " % of the target's motion (" << e.rms_pct_of_diagonal << " % of the diagonal), max "
+    << e.max_pct_of_diagonal << " % of the diagonal, volume " << e.volume_percent << " %";
   return s.str();
 }
 
@@ -122,6 +123,8 @@ OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const
   out.organ = organ.name;
   out.target_size = problem.target_size;
   out.measure_start_s = problem.measure_start_s() + problem.dt_s;
+  out.target_motion_m = problem.target_motion_m;
+  out.target_motion_pct_of_diagonal = 100.0 * problem.target_motion_m / problem.model.rest_extent_m;
   out.dt_s = problem.dt_s;
   out.rate_hz = problem.rate_hz;
 
@@ -173,7 +176,7 @@ OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const
 
   auto objective = [&](const Eigen::VectorXd& y) {
     const PlaybackError e = play(problem, with_regions(problem.model, decode(start, out.parameters, y)));
-    return e.diverged ? 1e6 : e.rms_percent;
+    return e.diverged ? 1e6 : e.rms_pct_of_diagonal;  // The same optimum as % of motion (playback.h).
   };
   CmaesSettings cma;
   cma.sigma = 1.0;  // Coordinates are in units of each parameter's first step.

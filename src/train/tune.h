@@ -42,6 +42,8 @@ struct OrganTuning {
   PlaybackError written, before, after; ///< The scene's own drives, the untuned fit, the tuned drives.
   std::vector<std::vector<double>> target_size;  ///< Per region, over the measured steps (Problem::target_size).
   double measure_start_s = 0, dt_s = 0, rate_hz = 0;
+  double target_motion_m = 0;                ///< Problem::target_motion_m. unit: m
+  double target_motion_pct_of_diagonal = 0;  ///< The same, % of the bounding diagonal.
   double mean_coupling_force_N = 0;
   int generations = 0, evaluations = 0;
   std::string stop_reason;

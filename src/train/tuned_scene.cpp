@@ -15,8 +15,8 @@ std::string tuned_scene_yaml(const scene::Scene& scene, const std::vector<OrganT
     for (const OrganTuning& tuning : tunings) {
       if (tuning.organ != organ.name) continue;
       changes.push_back({tuning.organ, tuning.regions});
-      note << "# systole tune: organ '" << tuning.organ << "' RMS error " << tuning.before.rms_percent
-           << " % (fitted) -> " << tuning.after.rms_percent << " % (tuned) of its size, " << tuning.generations
+      note << "# systole tune: organ '" << tuning.organ << "' RMS error " << tuning.before.rms_pct_of_motion
+           << " % (fitted) -> " << tuning.after.rms_pct_of_motion << " % (tuned) of the target's motion, " << tuning.generations
            << " generations.\n";
     }
   }
