@@ -442,8 +442,10 @@ void table_row(std::ostream& s, const BenchResult& r, bool starred) {
 
 }  // namespace
 
-std::string format_table(const BenchReport& report) {
-  std::ostringstream s;
+namespace {
+
+/// The reference, its motion and its proof: what every figure of the table rests on.
+void reference_lines(std::ostream& s, const BenchReport& report) {
   char line[768];
   const BenchOptions& o = report.options;
   std::snprintf(line, sizeof line,
@@ -456,26 +458,59 @@ std::string format_table(const BenchReport& report) {
   std::snprintf(line, sizeof line, "  self-convergence: at half the step it moves by %.3f %% of the motion (at most %.0f %%)\n",
                 report.self_check.rms_pct_of_motion, kReferenceTolerancePct);
   s << line;
-  if (report.second_solver) {
-    const BenchResult& c = *report.second_solver;
-    if (!c.diverged.empty()) {
-      s << "  second solver: " << c.config.label() << " diverged (" << c.diverged << ")\n";
-    } else {
-      const RegionBeat* amp = c.worst_amplitude();
-      const RegionBeat* phase = c.worst_phase();
-      std::snprintf(line, sizeof line, "  second solver: %s (%d substeps) differs by %.3f %% of the motion", c.config.label().c_str(),
-                    c.substeps, c.rms_pct_of_motion);
-      s << line;
-      if (amp) {
-        std::snprintf(line, sizeof line, "; worst beat amplitude %+.2f %% (%s), phase %+.1f ms (%s)", amp->amplitude_error_pct,
-                      amp->name.c_str(), phase->phase_lag_ms, phase->name.c_str());
-        s << line;
-      }
-      s << "\n";
-    }
+  if (!report.second_solver) return;
+  const BenchResult& c = *report.second_solver;
+  if (!c.diverged.empty()) {
+    s << "  second solver: " << c.config.label() << " diverged (" << c.diverged << ")\n";
+    return;
   }
+  std::snprintf(line, sizeof line, "  second solver: %s (%d substeps) differs by %.3f %% of the motion", c.config.label().c_str(),
+                c.substeps, c.rms_pct_of_motion);
+  s << line;
+  const RegionBeat* amp = c.worst_amplitude();
+  const RegionBeat* phase = c.worst_phase();
+  if (amp && phase) {
+    std::snprintf(line, sizeof line, "; worst beat amplitude %+.2f %% (%s), phase %+.1f ms (%s)", amp->amplitude_error_pct,
+                  amp->name.c_str(), phase->phase_lag_ms, phase->name.c_str());
+    s << line;
+  }
+  s << "\n";
+}
+
+/// Every run's beat in every periodically driven region.
+void beat_block(std::ostream& s, const BenchReport& report) {
+  if (report.frozen.regions.empty()) return;
+  char line[256];
+  s << "\nbeat of each driven region against the reference (amplitude % / phase ms):\n";
+  std::snprintf(line, sizeof line, "%-40s", "run");
+  s << line;
+  for (const auto& region : report.frozen.regions) {
+    std::snprintf(line, sizeof line, " %22s", region.name.substr(region.name.find('.') + 1).c_str());
+    s << line;
+  }
+  s << "\n";
+  auto beats = [&](const BenchResult& r) {
+    if (!r.diverged.empty()) return;
+    std::snprintf(line, sizeof line, "%-40s", r.label.c_str());
+    s << line;
+    for (const auto& b : r.regions) {
+      std::snprintf(line, sizeof line, " %+12.2f / %+6.1f", b.amplitude_error_pct, b.phase_lag_ms);
+      s << line;
+    }
+    s << "\n";
+  };
+  if (report.second_solver) beats(*report.second_solver);
+  for (const auto& r : report.results) beats(r);
+}
+
+}  // namespace
+
+std::string format_table(const BenchReport& report) {
+  std::ostringstream s;
+  reference_lines(s, report);
   s << "errors: RMS vertex distance to the reference, % of its motion (a motionless organ: 100) and % of the diagonal; "
        "beat: the worst driven region's amplitude error and phase lag\n";
+  char line[256];
   std::snprintf(line, sizeof line, "%-40s %9s %4s %6s %7s %9s %7s %7s %8s %8s %10s %8s\n", "run (* Pareto front)", "step", "sub",
                 "parts", "springs", "% motion", "% diag", "vol %", "ampl %", "phase ms", "ms/sim-s", "x real");
   s << line;
@@ -483,28 +518,7 @@ std::string format_table(const BenchReport& report) {
   table_row(s, report.self_check, false);
   if (report.second_solver) table_row(s, *report.second_solver, false);
   for (const auto& r : report.results) table_row(s, r, true);
-  if (!report.frozen.regions.empty()) {
-    s << "\nbeat of each driven region against the reference (amplitude % / phase ms):\n";
-    std::snprintf(line, sizeof line, "%-40s", "run");
-    s << line;
-    for (const auto& region : report.frozen.regions) {
-      std::snprintf(line, sizeof line, " %22s", region.name.substr(region.name.find('.') + 1).c_str());
-      s << line;
-    }
-    s << "\n";
-    auto beats = [&](const BenchResult& r) {
-      if (!r.diverged.empty()) return;
-      std::snprintf(line, sizeof line, "%-40s", r.label.c_str());
-      s << line;
-      for (const auto& b : r.regions) {
-        std::snprintf(line, sizeof line, " %+12.2f / %+6.1f", b.amplitude_error_pct, b.phase_lag_ms);
-        s << line;
-      }
-      s << "\n";
-    };
-    if (report.second_solver) beats(*report.second_solver);
-    for (const auto& r : report.results) beats(r);
-  }
+  beat_block(s, report);
   return s.str();
 }
 
@@ -570,7 +584,7 @@ plot::Figure speed_error_figure(const BenchReport& report) {
     if (r.config.method == scene::SolverMethod::kProjective) {
       label += (label.empty() ? "" : " ") + std::string("it") + std::to_string(r.config.iterations);
     }
-    if (r.config.dt_s > 0 && r.config.dt_s != 1.0 / 240.0) label += " " + step_text(r.dt_s);
+    if (r.config.dt_s > 0) label += " " + step_text(r.dt_s);
     fig.series[index[name]].points.push_back({r.rms_pct_of_motion, r.cost_ms_per_s, label});
     if (r.pareto) front.push_back(&r);
     lo = std::min(lo, r.rms_pct_of_motion);
