@@ -145,7 +145,11 @@ PlaybackError play(const Problem& problem, const sim::Model& model) {
   }
   const double t0 = problem.measure_start_s() + problem.dt_s;
   for (std::size_t r = 0; r < regions; ++r) {
-    if (region_count[r] > 0) {
+    // A region the target hardly moves (a thousandth of the organ's motion) has no motion
+    // to be a share of: NaN, which the report shows as "-".
+    if (region_count[r] > 0 && problem.target_region_motion_m[r] < 1e-3 * problem.target_motion_m) {
+      e.regions[r].rms_pct_of_motion = std::numeric_limits<double>::quiet_NaN();
+    } else if (region_count[r] > 0) {
       e.regions[r].rms_pct_of_motion = share_of(std::sqrt(region_sq[r] / region_count[r]), problem.target_region_motion_m[r]);
     }
     const double played = first_harmonic_phase(e.size[r], t0, problem.dt_s, problem.rate_hz);

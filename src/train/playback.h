@@ -41,7 +41,7 @@ Problem make_problem(const scene::Scene& scene, std::size_t organ_index);
 std::vector<double> region_sizes(const sim::Model& model, const Eigen::Matrix3Xd& x);
 
 struct RegionError {
-  double rms_pct_of_motion = 0;  ///< RMS vertex error of the region, % of the region's target motion.
+  double rms_pct_of_motion = 0;  ///< RMS vertex error of the region, % of the region's target motion (NaN: the target keeps it still).
   double phase_deg = 0;          ///< Phase of the region size's first harmonic, played minus target. unit: deg
 };
 

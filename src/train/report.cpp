@@ -1,6 +1,7 @@
 #include "train/report.h"
 
 #include <fstream>
+#include <cmath>
 #include <sstream>
 
 #include "chart/svg_chart.h"
@@ -20,6 +21,9 @@ std::string fixed(double v, int digits = 3) {
   s << v;
   return s.str();
 }
+
+/// A share in % with two decimals, or "-" when there is nothing it is a share of.
+std::string share(double pct) { return std::isnan(pct) ? "-" : fixed(pct, 2); }
 
 std::string error_row(const std::string& drives, const PlaybackError& e) {
   return "| " + drives + " | " + fixed(e.rms_pct_of_motion, 2) + " | " + fixed(e.rms_pct_of_diagonal) + " | " +
@@ -60,7 +64,7 @@ std::string report_markdown(const std::string& scene_path, const std::vector<Org
     for (std::size_t r = 0; r < t.regions.size(); ++r) {
       const scene::Region& region = t.regions[r];
       if (region.pinned) continue;
-      o << "| " << region.name << " | " << fixed(t.before.regions[r].rms_pct_of_motion) << " | " << fixed(t.after.regions[r].rms_pct_of_motion) << " | "
+      o << "| " << region.name << " | " << share(t.before.regions[r].rms_pct_of_motion) << " | " << share(t.after.regions[r].rms_pct_of_motion) << " | "
         << fixed(t.before.regions[r].phase_deg, 1) << " | " << fixed(t.after.regions[r].phase_deg, 1) << " | ![" << region.name << "]("
         << plot_name(t, region) << ") |\n";
     }
