@@ -90,6 +90,7 @@ inline constexpr long kVolumeHessianSteps = 4;
 struct ProjectiveCache : SolverCache {
   int particles = 0;
   int springs = 0;
+  double material = 0;  ///< material_fingerprint of the model the factors are of.
   std::vector<int> free_index;  ///< Per particle: its row in the system, or -1 (pinned).
   std::vector<int> free_particles;
   Factor backward_euler, bdf2;
@@ -105,6 +106,7 @@ struct ProjectiveCache : SolverCache {
     auto copy = std::make_unique<ProjectiveCache>();
     copy->particles = particles;
     copy->springs = springs;
+    copy->material = material;
     copy->free_index = free_index;
     copy->free_particles = free_particles;
     copy->x_old = x_old;
@@ -117,12 +119,27 @@ struct ProjectiveCache : SolverCache {
   }
 };
 
+/// What the system matrix is made of, in one number: a State stepped by another model of
+/// the same size (training tries other stiffnesses on copies) must not reuse its factors.
+double material_fingerprint(const Model& model) {
+  double sum = model.drag_per_s;
+  const Springs& sp = model.springs;
+  for (int j = 0; j < sp.size(); ++j) sum += (j + 1) * (sp.compliance_m_per_N[j] + 1e3 * sp.damping_s[j]);
+  for (Eigen::Index i = 0; i < model.inverse_mass.size(); ++i) sum += (i + 1) * model.inverse_mass[i];
+  return sum;
+}
+
 ProjectiveCache& cache_for(const Model& model, State& s) {
   ProjectiveCache* c = s.solver_cache.get<ProjectiveCache>();
-  if (c != nullptr && c->particles == model.particle_count() && c->springs == model.springs.size()) return *c;
+  const double material = material_fingerprint(model);
+  if (c != nullptr && c->particles == model.particle_count() && c->springs == model.springs.size() &&
+      c->material == material) {
+    return *c;
+  }
   auto fresh = std::make_unique<ProjectiveCache>();
   fresh->particles = model.particle_count();
   fresh->springs = model.springs.size();
+  fresh->material = material;
   fresh->free_index.assign(model.particle_count(), -1);
   for (int i = 0; i < model.particle_count(); ++i) {
     if (model.inverse_mass[i] == 0) continue;
