@@ -28,7 +28,7 @@ Problem make_problem(const scene::Scene& scene, std::size_t organ_index) {
   world::OrganBody& body = world.organs.front();
   const scene::Organ& organ = alone.organs.front();
   Problem p{organ.name, std::move(body.model), world.dt_s, organ.target.rate_hz, 0, 0,
-            load_target(organ, body.geometry), {}, {}, {}};
+            load_target(organ, body.geometry), {}, {}, {}, 0, {}};
   const double steps_per_cycle = 1.0 / (p.rate_hz * p.dt_s);
   p.settle_steps = static_cast<int>(std::lround(organ.target.settle_cycles * steps_per_cycle));
   p.measure_steps = std::max(2, static_cast<int>(std::lround(organ.target.measure_cycles * steps_per_cycle)));
