@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <unordered_map>
 
 #include "common/error.h"
 
@@ -16,9 +17,30 @@ Origin origin_of(const YAML::Mark& mark, const std::string& file, const Origin& 
   return Origin{file, mark.line + 1, mark.column + 1};
 }
 
-Node convert(const YAML::Node& in, const std::string& file, const Origin& fallback) {
+/// The values converted so far and the current depth: aliases are expanded by the
+/// conversion, so it is where their cost is counted.
+struct Budget {
+  std::size_t values = 0;
+  int depth = 0;
+};
+
+Node convert(const YAML::Node& in, const std::string& file, const Origin& fallback, Budget& budget) {
   Node out;
   out.origin = origin_of(in.Mark(), file, fallback);
+  if (++budget.values > kMaxSceneValues) {
+    fail(out.origin, "", "the scene expands to more than " + std::to_string(kMaxSceneValues) +
+                             " values; YAML aliases (*name) repeat what they name, and nested ones multiply: write the "
+                             "values out, or use fewer aliases");
+  }
+  if (budget.depth > kMaxSceneDepth) {
+    fail(out.origin, "", "lists and maps are nested more than " + std::to_string(kMaxSceneDepth) +
+                             " deep; a scene needs a handful of levels");
+  }
+  struct Deeper {
+    Budget& b;
+    explicit Deeper(Budget& b) : b(b) { ++b.depth; }
+    ~Deeper() { --b.depth; }
+  } deeper(budget);
   switch (in.Type()) {
     case YAML::NodeType::Undefined:
     case YAML::NodeType::Null:
@@ -30,25 +52,81 @@ Node convert(const YAML::Node& in, const std::string& file, const Origin& fallba
       break;
     case YAML::NodeType::Sequence:
       out.kind = Node::Kind::kList;
-      for (const YAML::Node& item : in) out.items.push_back(convert(item, file, out.origin));
+      for (const YAML::Node& item : in) out.items.push_back(convert(item, file, out.origin, budget));
       break;
-    case YAML::NodeType::Map:
+    case YAML::NodeType::Map: {
       out.kind = Node::Kind::kMap;
+      std::unordered_map<std::string, int> first_line;  // Linear in the keys, however many.
       for (const auto& kv : in) {
         const Origin key_origin = origin_of(kv.first.Mark(), file, out.origin);
-        if (!kv.first.IsScalar()) fail(key_origin, "", "a key must be a plain name, not " + convert(kv.first, file, key_origin).describe());
+        if (!kv.first.IsScalar()) {
+          fail(key_origin, "", "a key must be a plain name, not " + convert(kv.first, file, key_origin, budget).describe());
+        }
         const std::string key = kv.first.Scalar();
         // yaml-cpp keeps both copies of a repeated key; the second would silently win.
-        const auto first = std::find_if(out.entries.begin(), out.entries.end(),
-                                        [&](const MapEntry& e) { return e.key == key; });
-        if (first != out.entries.end())
-          fail(key_origin, "", "duplicate key '" + key + "' (first written at line " +
-                                   std::to_string(first->key_origin.line) + ")");
-        out.entries.push_back(MapEntry{key, key_origin, convert(kv.second, file, key_origin)});
+        const auto [first, added] = first_line.try_emplace(key, key_origin.line);
+        if (!added) fail(key_origin, "", "duplicate key '" + key + "' (first written at line " + std::to_string(first->second) + ")");
+        out.entries.push_back(MapEntry{key, key_origin, convert(kv.second, file, key_origin, budget)});
       }
       break;
+    }
   }
   return out;
+}
+
+/// Refuses, before the parser sees it, text nested deeper than kMaxSceneDepth (the parser
+/// recurses once per level and would run out of stack) - flow brackets outside quotes and
+/// comments, and block levels counted as indentation steps and "- " items opened on one
+/// line - and text with more than kMaxSceneValues separators (", ", ": ", "- "), which
+/// cannot be a scene within the bound and would cost the parser hundreds of megabytes.
+void check_shape(std::string_view text, const std::string& file) {
+  int flow = 0, line = 1, column = 0;
+  bool in_comment = false, at_line_start = true;
+  int indent = 0, dashes = 0;
+  std::size_t separators = 0;
+  char quote = 0, previous = 0;
+  auto too_deep = [&](int depth) {
+    if (depth <= kMaxSceneDepth) return;
+    fail(Origin{file, line, column + 1}, "", "lists and maps are nested more than " + std::to_string(kMaxSceneDepth) +
+                                                 " deep; a scene needs a handful of levels");
+  };
+  for (char c : text) {
+    ++column;
+    const char before = previous;
+    previous = c;
+    if ((c == ' ' || c == '\n') && (before == ',' || before == ':' || before == '-') && !quote && !in_comment &&
+        ++separators > kMaxSceneValues) {
+      fail(Origin{file, line, column}, "", "has more than " + std::to_string(kMaxSceneValues) +
+                                               " values; a scene needs far fewer (meshes and targets belong in files of "
+                                               "their own)");
+    }
+    if (c == '\n') {
+      ++line, column = 0, in_comment = false, at_line_start = true, indent = 0, dashes = 0;
+      continue;
+    }
+    if (in_comment) continue;
+    if (at_line_start) {
+      if (c == ' ') {
+        ++indent;
+        continue;
+      }
+      if (c == '-') {
+        ++dashes;
+        continue;
+      }
+      at_line_start = false;
+      // Two columns per block level is the tightest YAML allows.
+      too_deep(indent / 2 + dashes);
+    }
+    if (quote) {
+      if (c == quote) quote = 0;
+      continue;
+    }
+    if (c == '"' || c == '\'') quote = c;
+    else if (c == '#') in_comment = true;
+    else if (c == '[' || c == '{') too_deep(++flow);
+    else if ((c == ']' || c == '}') && flow > 0) --flow;
+  }
 }
 
 // Levenshtein distance, for "did you mean".
@@ -90,13 +168,19 @@ std::string Node::describe() const {
 }
 
 Node parse_yaml(std::string_view text, const std::string& origin_file) {
+  if (text.size() > kMaxSceneBytes) {
+    fail(Origin{origin_file, 0, 0}, "", "is " + std::to_string(text.size()) + " bytes; a scene may be at most " +
+                                            std::to_string(kMaxSceneBytes) + " (meshes and targets belong in files of their own)");
+  }
+  check_shape(text, origin_file);
   YAML::Node root;
   try {
     root = YAML::Load(std::string(text));
   } catch (const YAML::ParserException& e) {
     fail(Origin{origin_file, e.mark.line + 1, e.mark.column + 1}, "", "invalid YAML: " + e.msg);
   }
-  return convert(root, origin_file, Origin{origin_file, 1, 1});
+  Budget budget;
+  return convert(root, origin_file, Origin{origin_file, 1, 1}, budget);
 }
 
 std::string where(const Origin& origin) {

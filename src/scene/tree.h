@@ -35,8 +35,16 @@ struct MapEntry {
   Node value;
 };
 
-/// Parses YAML text; `origin_file` labels every node. A syntax error, or a duplicate key,
-/// throws Error(kDataError) with file:line:column.
+/// How much a scene may be, checked while reading: YAML aliases repeat the node they name,
+/// so a few hundred bytes can stand for billions of values (a "billion laughs"), and deep
+/// nesting exhausts the parser's stack. The shipped scenes are far below every bound.
+inline constexpr std::size_t kMaxSceneBytes = 16u << 20;    ///< A scene file or -D value. unit: bytes
+inline constexpr std::size_t kMaxSceneValues = 100'000;     ///< Values, after aliases are expanded.
+inline constexpr int kMaxSceneDepth = 64;                   ///< Nested lists and maps.
+
+/// Parses YAML text; `origin_file` labels every node. A syntax error, a duplicate key, or
+/// text beyond the bounds above throws Error(kDataError) with file:line:column and, for a
+/// bound, which one and why it exists. Linear in the expanded size, which is bounded.
 Node parse_yaml(std::string_view text, const std::string& origin_file);
 
 /// "file:line:column: " (or "file: " when the line is unknown).
