@@ -20,6 +20,7 @@
 #include "clip/bake.h"
 #include "clip/frame_list.h"
 #include "clip/video_format.h"
+#include "common/atomic_output.h"
 #include "common/error.h"
 #include "common/json.h"
 #include "scene/content_hash.h"
@@ -314,11 +315,12 @@ JobResult run_job(const Job& job, const BatchOptions& options) {
     JobIdentity identity{job.scene.string(), scene::scene_content_hash(scene), job.overrides, options.frames, 0};
     if (!options.from_bake.empty()) identity.bake_checksum = clip::BakeReader(options.from_bake).checksum();
     const std::string who = options.several ? job.name + ": " : "";
+    // Leftovers of a run that died (SIGKILL, a lost node) go even when this job is skipped.
+    if (!request.video.empty()) sweep_stale_outputs(request.video.has_parent_path() ? request.video.parent_path() : ".");
     if (!request.video.empty() && request.png_dir.empty() && !options.force && up_to_date(request.video, identity)) {
       std::cerr << who << "up to date, skipped: " << request.video.string() << " (--force renders it again)\n";
       result.status = JobResult::Status::kSkipped;
     } else {
-      if (!request.video.empty()) remove_manifest(request.video);
       const auto times = clip::render_clip(scene, request);
       if (!request.video.empty()) write_manifest(request.video, identity);
       if (!request.video.empty()) std::cerr << who << "wrote " << request.video.string() << "\n";
@@ -331,6 +333,9 @@ JobResult run_job(const Job& job, const BatchOptions& options) {
   } catch (const Error& e) {
     result.error = e.what();
     result.exit_code = static_cast<int>(e.code());
+  } catch (const std::bad_alloc&) {
+    result.error = out_of_memory_error().what();
+    result.exit_code = static_cast<int>(ExitCode::kOutOfMemory);
   } catch (const std::exception& e) {
     result.error = std::string("internal error: ") + e.what();
     result.exit_code = static_cast<int>(ExitCode::kInternal);

@@ -1,8 +1,10 @@
 #include "batch/manifest.h"
 
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <system_error>
+#include <vector>
 
 #include "common/atomic_output.h"
 #include "common/error.h"
@@ -26,6 +28,19 @@ std::string field(const std::string& text, const std::string& name) {
   return end == std::string::npos ? std::string() : text.substr(begin, end - begin);
 }
 
+/// FNV-1a over the file's bytes, or nullopt if it cannot be read.
+std::optional<std::uint64_t> file_checksum(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  Fnv1a64 hash;
+  std::vector<char> buffer(1 << 20);
+  while (in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0) {
+    hash.update(buffer.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) return std::nullopt;
+  return hash.value();
+}
+
 }  // namespace
 
 std::uint64_t JobIdentity::key() const {
@@ -47,13 +62,11 @@ bool up_to_date(const fs::path& video, const JobIdentity& job) {
   if (!in) return false;
   std::stringstream text;
   text << in.rdbuf();
-  return field(text.str(), "job_key") == to_hex(job.key()) &&
-         field(text.str(), "video_bytes") == std::to_string(bytes);
-}
-
-void remove_manifest(const fs::path& video) {
-  std::error_code ec;
-  fs::remove(manifest_path(video), ec);
+  if (field(text.str(), "job_key") != to_hex(job.key()) || field(text.str(), "video_bytes") != std::to_string(bytes)) {
+    return false;
+  }
+  const auto checksum = file_checksum(video);
+  return checksum && field(text.str(), "video_checksum") == to_hex(*checksum);
 }
 
 void write_manifest(const fs::path& video, const JobIdentity& job) {
@@ -68,7 +81,8 @@ void write_manifest(const fs::path& video, const JobIdentity& job) {
   json << "],\n  \"frames\": " << json_quote(job.frames.empty() ? "all" : job.frames) << ",\n"
        << "  \"bake_checksum\": " << json_quote(job.bake_checksum ? to_hex(job.bake_checksum) : "") << ",\n"
        << "  \"video\": " << json_quote(video.filename().string()) << ",\n"
-       << "  \"video_bytes\": " << fs::file_size(video) << "\n}\n";
+       << "  \"video_bytes\": " << fs::file_size(video) << ",\n"
+       << "  \"video_checksum\": " << json_quote(to_hex(file_checksum(video).value_or(0))) << "\n}\n";
   AtomicOutput out(manifest_path(video));
   {
     std::ofstream file(out.temp_path(), std::ios::binary);

@@ -5,6 +5,8 @@
 // Inputs:  the job's identity: Systole's version, the scene file's bytes and those of the
 //          mesh files it names, the -D overrides in order, the frame selection, the bake.
 // Outputs: <video>.json, written atomically after the video; up_to_date() compares.
+//          A manifest is only ever replaced, never removed: a run that fails leaves the
+//          earlier video and its manifest as they were.
 // See also: app/batch.h (runs jobs), docs/batch.md (the manifest's fields).
 
 #include <cstdint>
@@ -32,13 +34,11 @@ struct JobIdentity {
 /// <video>.json
 std::filesystem::path manifest_path(const std::filesystem::path& video);
 
-/// True when the video exists and its manifest names the same key and the video's size
-/// (so a video replaced by hand is not taken for done).
+/// True when the video exists and its manifest names the same key, the video's size and
+/// the checksum of its bytes. So a manifest vouches for one video only: one replaced by
+/// hand, or a new video whose run died before its own manifest was written (the earlier
+/// manifest is kept until then, so a failed run loses no record), is not taken for done.
 bool up_to_date(const std::filesystem::path& video, const JobIdentity& job);
-
-/// Removes a manifest before its video is re-rendered, so a run killed between the new
-/// video and the new manifest leaves no manifest that vouches for the wrong video.
-void remove_manifest(const std::filesystem::path& video);
 
 /// Writes the manifest atomically; call after the video is in place.
 void write_manifest(const std::filesystem::path& video, const JobIdentity& job);

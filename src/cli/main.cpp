@@ -5,6 +5,7 @@
 
 #include <csignal>
 #include <iostream>
+#include <new>
 
 #include "cli/command.h"
 #include "common/atomic_output.h"
@@ -61,6 +62,10 @@ int main(int argc, char** argv) {
       if (command.parser->parsed()) return command.run();
     }
   } catch (const Error& e) {
+    std::cerr << "systole: " << e.what() << "\n";
+    return static_cast<int>(e.code());
+  } catch (const std::bad_alloc&) {
+    const Error e = systole::out_of_memory_error();
     std::cerr << "systole: " << e.what() << "\n";
     return static_cast<int>(e.code());
   } catch (const std::exception& e) {

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "common/error.h"
+
 namespace systole::clip {
 namespace {
 
@@ -27,6 +29,11 @@ std::filesystem::path default_video_path(const scene::Scene& scene) {
 
 encode::VideoFormat video_format(const scene::Scene& scene, const std::filesystem::path& video) {
   if (const auto named = encode::video_format_of(video)) return *named;
+  if (video.has_extension()) {
+    throw Error(ExitCode::kUsage, video.string() + ": '" + video.extension().string() +
+                                      "' is not a video's extension; name the output .mp4, .mkv, .webm or .gif, or "
+                                      "give it no extension to take output.format's");
+  }
   return encode_format(scene.output.format);
 }
 

@@ -14,7 +14,8 @@ namespace systole::clip {
 std::filesystem::path default_video_path(const scene::Scene& scene);
 
 /// The format a video is written in: the one its extension names (.mp4, .mkv, .webm, .gif),
-/// else the scene's output.format. So `-o clip.gif` makes a GIF whatever the scene says.
+/// or with no extension the scene's output.format. So `-o clip.gif` makes a GIF whatever
+/// the scene says; any other extension (`-o notes.txt`) is Error(kUsage).
 encode::VideoFormat video_format(const scene::Scene& scene, const std::filesystem::path& video);
 
 /// The encoder settings for the scene's output in `format`. VP9's constant quality and

@@ -1,20 +1,33 @@
 #include "common/atomic_output.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
 #include <atomic>
+#include <cerrno>
+#include <chrono>
 #include <cstring>
+#include <ctime>
+#include <map>
+#include <mutex>
+#include <set>
+#include <string>
 #include <system_error>
+#include <thread>
+#include <vector>
 
 #include "common/error.h"
 
 namespace systole {
+namespace fs = std::filesystem;
 namespace {
 
-// Temporary paths live in a fixed table of plain char buffers so a signal handler can
-// unlink them without allocating or locking.
-constexpr int kMaxPending = 64;
+// Temporary and lock paths live in a fixed table of plain char buffers so a signal handler
+// can unlink them without allocating or locking.
+constexpr int kMaxPending = 128;
 constexpr std::size_t kMaxPath = 4096;
 enum SlotState : int { kFree = 0, kClaimed = 1, kReady = 2 };
 // The handler reads slot states on whichever thread the signal lands (the frame loop's
@@ -27,7 +40,7 @@ struct PendingSlot {
 std::array<PendingSlot, kMaxPending> g_pending;
 std::atomic<unsigned> g_counter{0};
 
-int register_pending(const std::filesystem::path& p) {
+int register_pending(const fs::path& p) {
   const std::string s = p.string();
   if (s.size() >= kMaxPath) return -1;
   for (int i = 0; i < kMaxPending; ++i) {
@@ -45,12 +58,133 @@ void unregister_pending(int slot) {
   if (slot >= 0) g_pending[slot].state.store(kFree);
 }
 
+// The locks this process holds, and the folders it has swept. A sweep must not take a lock
+// this process holds through another descriptor: flock would refuse it, but on NFS, where
+// flock becomes a per-process byte-range lock, it would be granted and then released.
+std::mutex g_mutex;
+std::set<std::string> g_held_locks;
+std::set<std::string> g_swept_dirs;
+
+constexpr std::string_view kPartialTag = ".partial-";
+constexpr std::string_view kLockSuffix = ".lock";
+
+fs::path folder_of(const fs::path& target) { return target.has_parent_path() ? target.parent_path() : fs::path("."); }
+
+/// An open descriptor holding the exclusive lock on `lock` (created if missing), or -1
+/// when another open file holds it. Throws Error(kCannotCreate) if it cannot be opened.
+int try_lock(const fs::path& lock) {
+  // The releaser unlinks the file before unlocking it, so a lock taken on a file that is
+  // no longer the one at `lock` guards nothing: open the new one and try again.
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd < 0) {
+      throw Error(ExitCode::kCannotCreate, "cannot create the lock file '" + lock.string() + "': " + std::strerror(errno));
+    }
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      const int error = errno;
+      ::close(fd);
+      if (error == EWOULDBLOCK || error == EINTR) return -1;
+      throw Error(ExitCode::kCannotCreate, "cannot lock '" + lock.string() + "': " + std::strerror(error));
+    }
+    struct stat held {}, named {};
+    if (::fstat(fd, &held) == 0 && ::stat(lock.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
+        held.st_dev == named.st_dev) {
+      return fd;
+    }
+    ::close(fd);
+  }
+  return -1;
+}
+
+/// Unlinks the lock file, then closes (and so unlocks) it: whoever opened it meanwhile
+/// finds on locking that it holds a removed file and opens the new one.
+void unlock(const fs::path& lock, int fd) {
+  ::unlink(lock.c_str());
+  ::close(fd);
+}
+
+std::string read_small_file(const fs::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+  if (fd < 0) return {};
+  char buffer[256];
+  const ssize_t n = ::read(fd, buffer, sizeof buffer - 1);
+  ::close(fd);
+  std::string text(buffer, n > 0 ? static_cast<std::size_t>(n) : 0);
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\0')) text.pop_back();
+  return text;
+}
+
+/// "pid 123 on node7 since 2026-11-25 04:12:05 UTC": who holds a lock, for the message a
+/// second writer gets.
+std::string holder_text() {
+  char host[256] = {};
+  if (::gethostname(host, sizeof host - 1) != 0) std::strcpy(host, "?");
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  ::gmtime_r(&now, &utc);
+  char when[32];
+  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S UTC", &utc);
+  return "pid " + std::to_string(::getpid()) + " on " + host + " since " + when + "\n";
+}
+
+/// The target file name a temporary or lock file in a folder belongs to, or "".
+std::string target_of_leftover(const std::string& name) {
+  if (name.size() < 2 || name[0] != '.') return {};
+  if (const auto at = name.rfind(kPartialTag); at != std::string::npos && at > 1) return name.substr(1, at - 1);
+  if (name.ends_with(kLockSuffix) && name.size() > 1 + kLockSuffix.size()) {
+    return name.substr(1, name.size() - 1 - kLockSuffix.size());
+  }
+  return {};
+}
+
 }  // namespace
 
-AtomicOutput::AtomicOutput(std::filesystem::path target) : target_(std::move(target)) {
-  namespace fs = std::filesystem;
+fs::path lock_path_of(const fs::path& target) {
+  return folder_of(target) / ("." + target.filename().string() + std::string(kLockSuffix));
+}
+
+int sweep_stale_outputs(const fs::path& dir) {
+  std::error_code ec;
+  // Leftovers by the target they belong to: its temporaries, and whether a lock file is there.
+  struct Leftovers {
+    std::vector<fs::path> temporaries;
+    bool lock_file = false;
+  };
+  std::map<std::string, Leftovers> by_target;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    const std::string target = target_of_leftover(name);
+    if (target.empty()) continue;
+    if (name.find(kPartialTag) != std::string::npos) {
+      by_target[target].temporaries.push_back(it->path());
+    } else {
+      by_target[target].lock_file = true;
+    }
+  }
+  int removed = 0;
+  for (const auto& [target, leftovers] : by_target) {
+    const fs::path lock = lock_path_of(dir / target);
+    {
+      const std::lock_guard guard(g_mutex);
+      if (g_held_locks.contains(lock.string())) continue;
+    }
+    int fd = -1;
+    try {
+      fd = try_lock(lock);
+    } catch (const Error&) {
+      continue;  // An unwritable folder: nothing of ours to clean.
+    }
+    if (fd < 0) continue;  // A live writer, here or on another node.
+    for (const fs::path& temporary : leftovers.temporaries) removed += fs::remove(temporary, ec) ? 1 : 0;
+    unlock(lock, fd);
+    removed += leftovers.lock_file ? 1 : 0;
+  }
+  return removed;
+}
+
+AtomicOutput::AtomicOutput(fs::path target) : target_(std::move(target)) {
   if (target_.empty()) throw Error(ExitCode::kCannotCreate, "output path is empty");
-  const fs::path dir = target_.has_parent_path() ? target_.parent_path() : fs::path(".");
+  const fs::path dir = folder_of(target_);
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) {
     throw Error(ExitCode::kCannotCreate,
@@ -63,27 +197,68 @@ AtomicOutput::AtomicOutput(std::filesystem::path target) : target_(std::move(tar
   if (fs::is_directory(target_, ec)) {
     throw Error(ExitCode::kCannotCreate, "cannot create '" + target_.string() + "': it is a directory");
   }
-  const std::string name = "." + target_.stem().string() + ".partial-" + std::to_string(::getpid()) + "-" +
-                           std::to_string(g_counter.fetch_add(1)) + target_.extension().string();
+  bool first_in_folder = false;
+  {
+    const std::lock_guard guard(g_mutex);
+    first_in_folder = g_swept_dirs.insert(fs::absolute(dir, ec).lexically_normal().string()).second;
+  }
+  if (first_in_folder) sweep_stale_outputs(dir);
+
+  lock_path_ = lock_path_of(target_);
+  // A sweep by another process holds a free lock for a moment: a writer is given a second
+  // to let it go before the target counts as taken.
+  for (int attempt = 0; attempt < 20 && lock_fd_ < 0; ++attempt) {
+    if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const std::lock_guard guard(g_mutex);
+    if (g_held_locks.contains(lock_path_.string())) break;
+    lock_fd_ = try_lock(lock_path_);
+    if (lock_fd_ >= 0) g_held_locks.insert(lock_path_.string());
+  }
+  if (lock_fd_ < 0) {
+    const std::string holder = read_small_file(lock_path_);
+    throw Error(ExitCode::kBusy, "'" + target_.string() + "' is being written by another run (" +
+                                     (holder.empty() ? std::string("its lock is '") + lock_path_.string() + "'" : holder) +
+                                     "); wait for it to finish, or write to another file");
+  }
+  const std::string holder = holder_text();
+  if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, holder.data(), holder.size(), 0) < 0) {
+    // Only the message a second writer would get loses its detail.
+  }
+  lock_slot_ = register_pending(lock_path_);
+
+  const std::string name = "." + target_.filename().string() + std::string(kPartialTag) + std::to_string(::getpid()) +
+                           "-" + std::to_string(g_counter.fetch_add(1)) + target_.extension().string();
   temp_ = dir / name;
-  slot_ = register_pending(temp_);
+  temp_slot_ = register_pending(temp_);
 }
 
 AtomicOutput::~AtomicOutput() {
   if (!committed_) {
     std::error_code ec;
-    std::filesystem::remove(temp_, ec);
+    fs::remove(temp_, ec);
   }
-  unregister_pending(slot_);
+  release();
+}
+
+void AtomicOutput::release() {
+  unregister_pending(temp_slot_);
+  unregister_pending(lock_slot_);
+  temp_slot_ = lock_slot_ = -1;
+  if (lock_fd_ < 0) return;
+  unlock(lock_path_, lock_fd_);
+  lock_fd_ = -1;
+  const std::lock_guard guard(g_mutex);
+  g_held_locks.erase(lock_path_.string());
 }
 
 void AtomicOutput::commit() {
   std::error_code ec;
-  std::filesystem::rename(temp_, target_, ec);
+  fs::rename(temp_, target_, ec);
   if (ec) {
     throw Error(ExitCode::kIoError, "cannot move '" + temp_.string() + "' to '" + target_.string() + "': " + ec.message());
   }
   committed_ = true;
+  release();
 }
 
 void remove_pending_outputs_signal_safe() {

@@ -1,9 +1,19 @@
 #pragma once
-// Output that appears whole or not at all. Data goes to a temporary file beside the
-// target (same directory, so the final rename is atomic on POSIX file systems);
-// commit() renames it over the target. Destroyed without commit() - an error, an
-// exception, an interrupt - the temporary is removed and any earlier output stays
-// untouched.
+// Output that appears whole or not at all, written by one process at a time, and whose
+// leftovers the next run cleans up.
+//
+// Data goes to a temporary file beside the target (same directory, so the final rename is
+// atomic on POSIX file systems); commit() renames it over the target. Destroyed without
+// commit() - an error, an exception, an interrupt - the temporary is removed and any
+// earlier output stays untouched.
+//
+// While it lives, an AtomicOutput holds an exclusive lock on `.<name>.lock` beside the
+// target (flock: released by the kernel when the process dies, however it dies; on NFS
+// Linux maps it to a byte-range lock the server arbitrates, so nodes sharing a folder see
+// each other). A second writer of the same target is refused (ExitCode::kBusy). A
+// temporary or lock file whose lock nobody holds belongs to a process that died (SIGKILL,
+// an OOM kill, a lost node): the first output written in a folder, and
+// sweep_stale_outputs(), remove it.
 
 #include <filesystem>
 
@@ -11,8 +21,9 @@ namespace systole {
 
 class AtomicOutput {
  public:
-  /// Checks that the target's directory exists and is writable; throws
-  /// Error(kCannotCreate) naming the path otherwise. Creates no file yet.
+  /// Checks that the target's directory exists and is writable and takes the target's
+  /// lock; throws Error(kCannotCreate) naming the path, or Error(kBusy) naming the process
+  /// that holds the lock. Creates no data file yet.
   explicit AtomicOutput(std::filesystem::path target);
   ~AtomicOutput();
   AtomicOutput(const AtomicOutput&) = delete;
@@ -23,18 +34,33 @@ class AtomicOutput {
   /// is kept so libraries that guess a format from it still do).
   const std::filesystem::path& temp_path() const { return temp_; }
 
-  /// Renames the temporary over the target. Throws Error(kIoError) on failure.
+  /// Renames the temporary over the target and releases the lock. Throws Error(kIoError)
+  /// on failure.
   void commit();
 
  private:
+  void release();
+
   std::filesystem::path target_;
   std::filesystem::path temp_;
+  std::filesystem::path lock_path_;
+  int lock_fd_ = -1;
   bool committed_ = false;
-  int slot_ = -1;  // Entry in the signal-safe table of pending temporaries.
+  int temp_slot_ = -1;  // Entries in the signal-safe table of pending files.
+  int lock_slot_ = -1;
 };
 
-/// Removes every temporary file still registered by a live AtomicOutput. Safe to call
-/// from a signal handler (it uses only unlink on pre-built paths).
+/// The lock file that guards `target`: `.<name>.lock` beside it.
+std::filesystem::path lock_path_of(const std::filesystem::path& target);
+
+/// Removes, in `dir`, every temporary and lock file of an AtomicOutput whose lock nobody
+/// holds (its writer died). Files of live writers, here or on another node, are left.
+/// Returns how many files it removed; errors reading the folder are ignored (a sweep is
+/// housekeeping, never a reason to fail a run).
+int sweep_stale_outputs(const std::filesystem::path& dir);
+
+/// Removes every temporary and lock file still registered by a live AtomicOutput. Safe to
+/// call from a signal handler (it uses only unlink on pre-built paths).
 void remove_pending_outputs_signal_safe();
 
 }  // namespace systole

@@ -19,6 +19,7 @@
 #include <system_error>
 
 #include "common/error.h"
+#include "common/input_file.h"
 #include "mesh/weld.h"
 
 // assimp 5.2 as Debian builds it (ASSIMP_BUILD_DEBUG) ends the process on an internal
@@ -72,16 +73,8 @@ void drop_unused_vertices(OrganMesh& mesh) {
 }
 
 void check_readable(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) {
-    throw Error(ExitCode::kNoInput, file.string() + ": mesh file not found");
-  }
-  if (std::filesystem::is_directory(file, ec)) {
-    throw Error(ExitCode::kNoInput, file.string() + ": is a directory, not a mesh file");
-  }
-  // A device or a pipe (/dev/zero, a FIFO) would never end or never come.
-  if (!std::filesystem::is_regular_file(file, ec)) {
-    throw Error(ExitCode::kNoInput, file.string() + ": not a regular file, so not a mesh file");
+  if (const auto reason = unreadable_file_reason(file)) {
+    throw Error(ExitCode::kNoInput, file.string() + ": cannot read the mesh file: it is " + *reason);
   }
   std::ifstream probe(file, std::ios::binary);
   if (!probe) throw Error(ExitCode::kNoInput, file.string() + ": cannot read mesh file");
@@ -258,7 +251,9 @@ OrganMesh import_mesh(const std::filesystem::path& file) {
     throw Error(ExitCode::kDataError, file.string() + ": the file holds no triangles");
   }
 
+  const std::size_t read_triangles = surface.triangles.size();
   weld(mesh, default_weld_tolerance(surface));
+  mesh.dropped_triangles = static_cast<int>(read_triangles - surface.triangles.size());
   if (surface.triangles.empty()) {
     throw Error(ExitCode::kDataError, file.string() + ": every triangle has zero size");
   }

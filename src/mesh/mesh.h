@@ -18,6 +18,9 @@ struct OrganMesh {
   TriangleMesh surface;
   std::vector<std::string> part_names;
   std::vector<int> vertex_part;  ///< Per vertex: index into part_names, or -1 for none.
+  /// Triangles the import left out: a corner repeated, in the file or once vertices closer
+  /// than the weld tolerance became one (validate's mesh report says how many).
+  int dropped_triangles = 0;
 
   int part_index(const std::string& name) const;  ///< -1 if absent.
 };

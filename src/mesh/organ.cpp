@@ -105,6 +105,23 @@ std::vector<int> assign_regions(const OrganMesh& mesh, const std::vector<scene::
                                             "' selects no vertex of the organ (selectors act on world positions, in metres)");
     }
   }
+  // A vertex belongs to the last region that selects it, so a later region can take every
+  // vertex of an earlier one: that region, and its drive, would silently do nothing.
+  std::vector<int> kept(regions.size(), 0);
+  for (const int r : vertex_region) {
+    if (r >= 0) ++kept[static_cast<size_t>(r)];
+  }
+  for (size_t r = 0; r < regions.size(); ++r) {
+    if (kept[r] > 0) continue;
+    std::string taker;
+    for (size_t later = r + 1; later < regions.size(); ++later) {
+      if (kept[later] > 0) taker += (taker.empty() ? "'" : ", '") + regions[later].name + "'";
+    }
+    throw Error(ExitCode::kDataError,
+                where(regions[r].origin) + "region '" + regions[r].name + "' keeps no vertex: every vertex it selects is " +
+                    "also selected by a later region (" + taker + "), and a vertex belongs to the last region that " +
+                    "selects it; narrow the later region's selectors, or list '" + regions[r].name + "' after it");
+  }
   return vertex_region;
 }
 
@@ -129,6 +146,12 @@ OrganGeometry build_organ_geometry(const scene::Organ& organ) {
     for (Eigen::Vector3i& t : geometry.mesh.surface.triangles) std::swap(t[1], t[2]);
     geometry.report = inspect(geometry.mesh.surface);
     geometry.report.notes.push_back("inside out: the closed surface had negative volume; all triangles were flipped to face outwards");
+  }
+  if (geometry.mesh.dropped_triangles > 0) {
+    geometry.report.notes.push_back(
+        "dropped triangles: " + std::to_string(geometry.mesh.dropped_triangles) +
+        " of the file's had a repeated corner (in the file, or after welding vertices closer than 1e-6 of the mesh's "
+        "size) and are neither simulated nor drawn; if the surface shows holes there, fix the mesh in a modeller");
   }
   try {
     geometry.vertex_region = assign_regions(geometry.mesh, organ.regions);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/input_file.h"
 #include "scene/overrides.h"
 #include "scene/schema.h"
 #include "scene/tree.h"
@@ -13,9 +14,9 @@
 namespace systole::scene {
 
 Scene load(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw Error(ExitCode::kNoInput, file.string() + ": scene file not found (or not a regular file)");
+  if (const auto reason = unreadable_file_reason(file)) {
+    throw Error(ExitCode::kNoInput, file.string() + ": cannot read the scene file: it is " + *reason);
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw Error(ExitCode::kNoInput, file.string() + ": cannot open scene file: " + std::strerror(errno));
   std::ostringstream text;

@@ -169,7 +169,8 @@ int count(const std::string& text, const std::string& what) {
 std::vector<std::string> partial_files(const fs::path& dir) {
   std::vector<std::string> found;
   for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    if (e.path().filename().string().find(".partial-") != std::string::npos) found.push_back(e.path().string());
+    const std::string name = e.path().filename().string();
+    if (name.find(".partial-") != std::string::npos || name.ends_with(".lock")) found.push_back(e.path().string());
   }
   return found;
 }
@@ -247,13 +248,14 @@ TEST(Batch, AJobKilledMidRenderLeavesNoPartialOutputAndTheRerunCompletesIt) {
     EXPECT_FALSE(fs::exists(dir / "out" / "one.mp4")) << signal;
     EXPECT_FALSE(fs::exists(dir / "out" / "one.mp4.json")) << signal;
     // SIGTERM removes the temporary; SIGKILL cannot be caught, and leaves a hidden
-    // .one.partial-<pid>-<n>.mp4 that is never mistaken for the output.
+    // .one.mp4.partial-<pid>-<n>.mp4 and .one.mp4.lock, never mistaken for the output.
     if (std::string(signal) == "TERM") {
       EXPECT_TRUE(partial_files(dir / "out").empty()) << r.output;
     }
   }
   const auto r = run(cmd);
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(partial_files(dir / "out").empty()) << "the rerun removed what the killed run left";
   EXPECT_TRUE(fs::exists(dir / "out" / "one.mp4.json"));
   EXPECT_NE(run(cmd).output.find("up to date"), std::string::npos);
 }

@@ -197,12 +197,12 @@ TEST(InvalidInput, ExtremeCoordinatesAreRefusedOrRendered) {
 
 TEST(InvalidInput, MissingAndUnreadableMeshPathsNameTheLine) {
   const Project p("mesh_missing", mesh_scene("nowhere/organ.obj"));
-  expect_rejected(p, p.render(), 66, p.scene.string() + ":3:18: organs[0].mesh.file: mesh file not found");
+  expect_rejected(p, p.render(), 66, p.scene.string() + ":3:18: organs[0].mesh.file: mesh file " + (p.dir / "nowhere/organ.obj").string() + " is not found");
   const Project d("mesh_is_a_folder", mesh_scene("folder.obj"));
   fs::create_directory(d.dir / "folder.obj");
   expect_rejected(d, d.render(), 66, "folder.obj");
   const Project f("mesh_is_a_device", mesh_scene("/dev/zero"));
-  expect_rejected(f, f.render(), 66, ":3:18: organs[0].mesh.file: not a regular file: /dev/zero");
+  expect_rejected(f, f.render(), 66, ":3:18: organs[0].mesh.file: mesh file /dev/zero is not a regular file");
 }
 
 // --- Paths ----------------------------------------------------------------------------------------
@@ -237,7 +237,8 @@ TEST(InvalidInput, UnreadableSceneAndMeshAreNoInput) {
   const std::string mesh_command = unprivileged(systole() + " render " + quoted(p.scene) + " -o " + quoted(p.video));
   if (mesh_command.empty()) GTEST_SKIP() << "cannot drop root privileges here";
   fs::permissions(p.dir, fs::perms::all);  // The unprivileged user may write the clip here.
-  expect_rejected(p, run(mesh_command), 66, "cannot read '" + (p.dir / "organ.obj").string());
+  expect_rejected(p, run(mesh_command), 66,
+                  "organs[0].mesh.file: mesh file " + (p.dir / "organ.obj").string() + " is not readable (Permission denied)");
   fs::permissions(p.scene, fs::perms::none);
   expect_rejected(p, run(mesh_command), 66, "scene.yaml");
 }

@@ -9,6 +9,7 @@
 
 #include "clip/render_clip.h"
 #include "clip/video_format.h"
+#include "common/error.h"
 #include "encode/encode_test_util.h"
 #include "encode/png.h"
 #include "overlay/cards.h"
@@ -221,7 +222,16 @@ TEST(OutputFormat, TheDefaultPathTakesTheFormatsExtension) {
   const auto s = scene::load_from_string(heart("duration: 0.2 s, format: webm"), "teaching.yaml", {});
   EXPECT_EQ(clip::default_video_path(s), fs::path("out/teaching.webm"));
   EXPECT_EQ(clip::video_format(s, "elsewhere/clip.gif"), encode::VideoFormat::kGif) << "the extension wins";
-  EXPECT_EQ(clip::video_format(s, "elsewhere/clip.video"), encode::VideoFormat::kWebm) << "else the scene's format";
+  EXPECT_EQ(clip::video_format(s, "elsewhere/clip"), encode::VideoFormat::kWebm) << "no extension: the scene's format";
+  // Any other extension is a mistake (-o notes.txt would have written a video called notes.txt).
+  try {
+    clip::video_format(s, "elsewhere/clip.txt");
+    FAIL() << "a .txt output was accepted";
+  } catch (const systole::Error& e) {
+    EXPECT_EQ(e.code(), systole::ExitCode::kUsage);
+    EXPECT_NE(std::string(e.what()).find("elsewhere/clip.txt: '.txt' is not a video's extension"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(OutputFormat, EveryFormatIsTheSameBytesOnEveryRun) {

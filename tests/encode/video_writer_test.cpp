@@ -275,7 +275,7 @@ TEST(VideoWriter, DestroyedWithoutFinishLeavesEarlierOutputUntouched) {
     for (int i = 0; i < 10; ++i) writer.write(moving_frame(s.width, s.height, i), i);
     int partial = 0;  // The temporary exists while writing; the target is still the old file.
     for (const auto& entry : fs::directory_iterator(dir)) {
-      partial += entry.path().filename().string().starts_with(".clip.partial-") ? 1 : 0;
+      partial += entry.path().filename().string().starts_with(".clip.mp4.partial-") ? 1 : 0;
     }
     EXPECT_EQ(partial, 1);
     EXPECT_EQ(test::read_bytes(file), earlier);

@@ -235,7 +235,7 @@ TEST(Import, DeviceOrPipeIsNotAMeshFile) {
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::kNoInput);
-    EXPECT_NE(std::string(e.what()).find("/dev/zero: not a regular file"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("/dev/zero: cannot read the mesh file: it is not a regular file"), std::string::npos) << e.what();
   }
 }
 

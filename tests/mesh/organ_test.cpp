@@ -83,6 +83,22 @@ TEST(AssignRegions, LaterRegionsOverride) {
   EXPECT_EQ(count_of(assign_regions(m, {}), -1), 12);
 }
 
+TEST(AssignRegions, ARegionALaterOneEmptiesIsAnErrorThatNamesBoth) {
+  const OrganMesh m = two_part_box();
+  Selector high = selector(SelectorKind::kPart);
+  high.part = "high";
+  try {
+    assign_regions(m, {region("valve", {high}, 9), region("body", {selector(SelectorKind::kAll)}, 12)});
+    FAIL() << "a region left with no vertex was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kDataError);
+    const std::string what = e.what();
+    EXPECT_NE(what.find("scene.yaml:9:5: region 'valve' keeps no vertex"), std::string::npos) << what;
+    EXPECT_NE(what.find("later region ('body')"), std::string::npos) << what;
+    EXPECT_NE(what.find("list 'valve' after it"), std::string::npos) << what;
+  }
+}
+
 TEST(AssignRegions, EmptyRegionIsAnErrorWithItsOrigin) {
   const OrganMesh m = two_part_box();
   Selector far = selector(SelectorKind::kSphere);
@@ -166,6 +182,30 @@ TEST(BuildOrganGeometry, FileUnitsRotationAndInsideOutRepair) {
   EXPECT_TRUE(noted);
   EXPECT_EQ(count_of(g.vertex_region, 0), 4);
   for (const auto& p : g.mesh.surface.positions) EXPECT_NEAR(std::abs(p.x() - 0.5), 0.005, 1e-12);
+}
+
+TEST(BuildOrganGeometry, TrianglesDroppedOnImportAreReported) {
+  // A closed cube plus two faces with a repeated corner: one as written, one after welding
+  // two corners that lie 1e-9 apart.
+  TriangleMesh cube = testing::cube();
+  std::string obj;
+  for (const auto& p : cube.positions) obj += "v " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(p.z()) + "\n";
+  obj += "v 0.000000001 0 0\n";
+  for (const auto& t : cube.triangles) obj += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1) + "\n";
+  obj += "f 1 1 2\n";
+  obj += "f 1 9 3\n";
+  const auto file = testing::scratch("cube_with_slivers.obj");
+  testing::write_text(file, obj);
+  scene::Organ organ;
+  organ.name = "box";
+  organ.mesh.file = file.string();
+  organ.mesh.unit_m = 1;
+  const OrganGeometry g = build_organ_geometry(organ);
+  EXPECT_EQ(g.mesh.dropped_triangles, 2);
+  EXPECT_EQ(g.mesh.surface.triangles.size(), 12u);
+  bool noted = false;
+  for (const auto& n : g.report.notes) noted |= n.starts_with("dropped triangles: 2 of the file's had a repeated corner");
+  EXPECT_TRUE(noted) << "validate's mesh report says what was left out";
 }
 
 TEST(BuildOrganGeometry, NoMeshIsAnError) {

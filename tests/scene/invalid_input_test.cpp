@@ -176,8 +176,45 @@ TEST(SceneInvalid, MissingMeshFileIsNoInputWithThePathLookedAt) {
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::kNoInput);
-    EXPECT_EQ(std::string(e.what()), (dir / "scene.yaml").string() + ":4:13: organs[0].mesh.file: mesh file not found: " +
-                                         (dir / "meshes" / "liver.obj").string());
+    EXPECT_EQ(std::string(e.what()), (dir / "scene.yaml").string() + ":4:13: organs[0].mesh.file: mesh file " +
+                                         (dir / "meshes" / "liver.obj").string() + " is not found");
+  }
+}
+
+TEST(SceneInvalid, SymbolicLinkLoopsAndBrokenLinksAreNamedForWhatTheyAre) {
+  const auto dir = testing::scratch_dir("mesh_links");
+  std::filesystem::remove(dir / "loop.obj");
+  std::filesystem::remove(dir / "broken.obj");
+  std::filesystem::create_symlink("loop.obj", dir / "loop.obj");
+  std::filesystem::create_symlink("gone.obj", dir / "broken.obj");
+  const auto message_for = [&](const std::string& file) -> std::string {
+    testing::write_file(dir / "scene.yaml", "organs:\n  - name: liver\n    mesh:\n      file: " + file + "\n");
+    try {
+      load(dir / "scene.yaml");
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::kNoInput);
+      return e.what();
+    }
+    return "accepted";
+  };
+  EXPECT_NE(message_for("loop.obj").find(":4:13: organs[0].mesh.file: mesh file " + (dir / "loop.obj").string() +
+                                         " is a symbolic link loop"),
+            std::string::npos)
+      << message_for("loop.obj");
+  EXPECT_NE(message_for("broken.obj").find("is a broken symbolic link (to 'gone.obj', which does not exist)"),
+            std::string::npos)
+      << message_for("broken.obj");
+  // The scene file itself.
+  std::filesystem::remove(dir / "scene_loop.yaml");
+  std::filesystem::create_symlink("scene_loop.yaml", dir / "scene_loop.yaml");
+  try {
+    load(dir / "scene_loop.yaml");
+    FAIL() << "a looping scene link was read";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kNoInput);
+    EXPECT_NE(std::string(e.what()).find("scene_loop.yaml: cannot read the scene file: it is a symbolic link loop"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -58,7 +58,7 @@ TEST(AnimationTarget, SceneKeysAreChecked) {
     return std::string("loaded");
   };
   EXPECT_NE(error_of("    target: {rate: 1 Hz, animation: missing.glb}\n").find("s.yaml:5"), std::string::npos);
-  EXPECT_NE(error_of("    target: {rate: 1 Hz, animation: missing.glb}\n").find("animation file not found"), std::string::npos);
+  EXPECT_NE(error_of("    target: {rate: 1 Hz, animation: missing.glb}\n").find("missing.glb is not found"), std::string::npos);
   EXPECT_NE(error_of("    target: {rate: 1 Hz, curves: [{region: apex, scale: [1, 0.9]}], samples: 8}\n").find("applies to an animation only"),
             std::string::npos);
   EXPECT_NE(error_of("    target: {rate: 1 Hz}\n").find("expected exactly one of frames, curves, animation"), std::string::npos);

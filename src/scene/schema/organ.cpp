@@ -4,6 +4,8 @@
 
 #include <filesystem>
 
+#include "common/input_file.h"
+
 namespace systole::scene::schema {
 namespace {
 
@@ -190,12 +192,10 @@ ValueSpec<MeshSource> mesh_spec() {
         if (has_file) {
           const std::filesystem::path file =
               std::filesystem::path(m.file).is_absolute() ? std::filesystem::path(m.file) : ctx.base_dir / m.file;
-          std::error_code ec;
-          if (!std::filesystem::is_regular_file(file, ec))
-            throw Error(ExitCode::kNoInput,
-                        where(origin_of(node, "file")) + join(path, "file") + ": " +
-                            (std::filesystem::exists(file, ec) ? "not a regular file" : "mesh file not found") + ": " +
-                            file.lexically_normal().string());
+          if (const auto reason = unreadable_file_reason(file)) {
+            throw Error(ExitCode::kNoInput, where(origin_of(node, "file")) + join(path, "file") + ": mesh file " +
+                                                file.lexically_normal().string() + " is " + *reason);
+          }
           m.file = file.lexically_normal().string();
         }
       });
@@ -215,10 +215,10 @@ ValueSpec<Target> target_spec() {
       [](const Node& node, TargetFrame& f, const std::string& path, const Context& ctx) {
         const std::filesystem::path file =
             std::filesystem::path(f.file).is_absolute() ? std::filesystem::path(f.file) : ctx.base_dir / f.file;
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(file, ec))
-          throw Error(ExitCode::kNoInput, where(origin_of(node, "file")) + join(path, "file") +
-                                              ": key-frame file not found: " + file.lexically_normal().string());
+        if (const auto reason = unreadable_file_reason(file)) {
+          throw Error(ExitCode::kNoInput, where(origin_of(node, "file")) + join(path, "file") + ": key-frame file " +
+                                              file.lexically_normal().string() + " is " + *reason);
+        }
         f.file = file.lexically_normal().string();
       });
   auto samples = list(number(open_closed(0, 10)), 2, 1024, "list of numbers");
@@ -276,10 +276,10 @@ ValueSpec<Target> target_spec() {
           const std::filesystem::path file = std::filesystem::path(t.animation).is_absolute()
                                                  ? std::filesystem::path(t.animation)
                                                  : ctx.base_dir / t.animation;
-          std::error_code ec;
-          if (!std::filesystem::is_regular_file(file, ec))
+          if (const auto reason = unreadable_file_reason(file)) {
             throw Error(ExitCode::kNoInput, where(origin_of(node, "animation")) + join(path, "animation") +
-                                                ": animation file not found: " + file.lexically_normal().string());
+                                                ": animation file " + file.lexically_normal().string() + " is " + *reason);
+          }
           t.animation = file.lexically_normal().string();
         }
         const double period_s = 1.0 / t.rate_hz;
