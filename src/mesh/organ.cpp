@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "common/error.h"
@@ -63,6 +64,47 @@ void place(OrganMesh& mesh, const scene::MeshSource& source, const scene::Transf
                                     Eigen::AngleAxisd(transform.rotate_rad.x(), Eigen::Vector3d::UnitX()))
                                        .toRotationMatrix();
   for (Eigen::Vector3d& p : positions) p = transform.translate_m + rotation * (transform.scale * p);
+}
+
+/// "17.3 cm", "3.46e+30 m": a length as a person reads it.
+std::string length_text(double metres) {
+  char text[48];
+  if (metres >= 0.01 && metres < 1) {
+    std::snprintf(text, sizeof text, "%.3g cm", metres * 100);
+  } else if (metres >= 0.001 && metres < 0.01) {
+    std::snprintf(text, sizeof text, "%.3g mm", metres * 1000);
+  } else {
+    std::snprintf(text, sizeof text, "%.3g m", metres);
+  }
+  return text;
+}
+
+// An organ is 5 mm to 2 m across. A mesh file outside that is a units mistake (a glTF is in
+// metres by its specification; OBJ and STL exports are often in mm or cm), and would give
+// an empty frame or a body the solver cannot hold (springs 1e-30 m long).
+constexpr double kSmallestOrgan_m = 0.005, kLargestOrgan_m = 2.0;
+
+void check_organ_size(const OrganMesh& mesh, const scene::Organ& organ, const std::string& label) {
+  const auto& positions = mesh.surface.positions;
+  Eigen::Vector3d lo = positions.front(), hi = positions.front();
+  for (const Eigen::Vector3d& p : positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double across_m = (hi - lo).norm();
+  if (across_m >= kSmallestOrgan_m && across_m <= kLargestOrgan_m) return;
+  const double file_across = across_m / (organ.mesh.unit_m * organ.transform.scale);
+  // The unit that makes it most like an organ (about 15 cm: log-distance), if any fits.
+  std::string fit;
+  double best = 1e300;
+  for (const auto& [name, unit_m] : {std::pair{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}}) {
+    const double across = file_across * unit_m * organ.transform.scale;
+    if (across < kSmallestOrgan_m || across > kLargestOrgan_m) continue;
+    if (const double d = std::abs(std::log(across / 0.15)); d < best) {
+      best = d;
+      fit = std::string("write `units: ") + name + "` (then it is " + length_text(across) + " across)";
+    }
+  }
+  if (fit.empty()) fit = "no unit (m, cm, mm) makes it organ-sized: check the file's scale, or set transform.scale";
+  throw Error(ExitCode::kDataError, label + ": the mesh is " + length_text(across_m) +
+                                        " across, but an organ is 5 mm to 2 m across, so its units are wrong; " + fit);
 }
 
 }  // namespace
@@ -139,6 +181,7 @@ OrganGeometry build_organ_geometry(const scene::Organ& organ) {
     throw Error(ExitCode::kDataError, label + ": the surface has no triangles");
   }
   place(geometry.mesh, organ.mesh, organ.transform);
+  if (!organ.mesh.file.empty()) check_organ_size(geometry.mesh, organ, label);
 
   geometry.report = inspect(geometry.mesh.surface);
   // A closed surface that faces inwards is turned outwards: normals and volume need it.

@@ -28,10 +28,11 @@ Waveform waveform_params(scene::Waveform w) {
   return Waveform::kNone;
 }
 
-InteractionParams interaction_params(const scene::Interaction& in) {
+InteractionParams interaction_params(const scene::Interaction& in, std::size_t index) {
   InteractionParams p;
   p.kind = in.kind == scene::InteractionKind::kGrab ? InteractionKind::kGrab : InteractionKind::kPoke;
   p.where = where(in.origin);
+  p.key = "interactions[" + std::to_string(index) + "]." + (p.kind == InteractionKind::kGrab ? "grab" : "poke");
   p.at_m = in.at_m;
   p.radius_m = in.radius_m;
   p.force_N = in.force_N;
@@ -103,8 +104,8 @@ ModelOptions model_options(const scene::Scene& scene, const std::string& organ_n
   options.clip_s = scene.output.start_frame * frame_s + scene.output.duration_s;  // Organ time at the clip's end.
   options.seed = scene.seed;
   options.floor = {scene.floor.enabled, scene.floor.point_m, scene.floor.normal};
-  for (const auto& in : scene.interactions) {
-    if (in.organ == organ_name) options.interactions.push_back(interaction_params(in));
+  for (std::size_t i = 0; i < scene.interactions.size(); ++i) {
+    if (scene.interactions[i].organ == organ_name) options.interactions.push_back(interaction_params(scene.interactions[i], i));
   }
   return options;
 }

@@ -64,8 +64,9 @@ void add_interactions(Model& m, const std::vector<InteractionParams>& interactio
     std::vector<int> patch = particles_near(m.rest_positions, in.at_m, in.radius_m + reach_m);
     if (patch.empty()) {
       throw Error(ExitCode::kDataError,
-                  in.where + ": interaction on '" + m.name + "' touches no vertex: nothing of the organ lies within " +
-                      std::to_string(in.radius_m) + " m of `at`; move `at` onto the surface or raise `radius`");
+                  in.where + ": " + in.key + ".at: no vertex of '" + m.name + "' lies within " + in.key + ".radius (" +
+                      std::to_string(in.radius_m) + " m) of it; move `at` onto the organ's surface (where its transform "
+                      "puts it) or raise `radius`");
     }
     if (in.kind == InteractionKind::kPoke) {
       Poke p;

@@ -97,6 +97,7 @@ enum class InteractionKind { kPoke, kGrab };
 struct InteractionParams {
   InteractionKind kind = InteractionKind::kPoke;
   std::string where;                                  ///< "file:line:column" of the entry, for messages.
+  std::string key;                                    ///< "interactions[2].poke", for messages.
   Eigen::Vector3d at_m = Eigen::Vector3d::Zero();     ///< Centre of the touched patch at rest. unit: m
   double radius_m = 0.01;                             ///< Particles within it are touched. unit: m
   Eigen::Vector3d force_N = Eigen::Vector3d::Zero();  ///< kPoke: total force on the patch. unit: N

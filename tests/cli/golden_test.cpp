@@ -1,3 +1,4 @@
+// ctest-labels: no-sanitizers
 // Golden images: every shipped scene (scenes/*.yaml, found at run time) rendered small at a
 // few moments of its cycle and compared with references made by the same renderer, filed
 // under tests/golden/<renderer key>/. SYSTOLE_UPDATE_GOLDENS=1 (scripts/update-goldens)
@@ -235,6 +236,10 @@ GoldenOutcome check_goldens(const GoldenSettings& s) {
   return out;
 }
 
+/// In CI (CI=true, as CI services set it) a renderer without references fails instead of
+/// skipping: a CI moved to another Mesa must not pass with no pixel checked.
+bool references_required(const char* ci) { return ci != nullptr && (std::string(ci) == "true" || std::string(ci) == "1"); }
+
 bool updating() {
   const char* v = std::getenv("SYSTOLE_UPDATE_GOLDENS");
   return v && std::string(v) != "" && std::string(v) != "0";
@@ -245,6 +250,9 @@ TEST(Golden, EveryShippedSceneMatchesItsReferences) {
   const auto out = check_goldens(s);
   for (const auto& change : out.changes) std::cout << "golden: " << change << "\n";
   if (s.update) std::cout << "golden: " << out.changes.size() << " change(s) for " << out.renderer.key << "\n";
+  if (!out.skip_reason.empty() && references_required(std::getenv("CI"))) {
+    FAIL() << out.skip_reason << ". CI=true: a CI run must check pixels, so missing references fail here.";
+  }
   if (!out.skip_reason.empty()) GTEST_SKIP() << out.skip_reason;
   for (const auto& failure : out.failures) ADD_FAILURE() << failure;
   if (!out.failures.empty()) {
@@ -290,6 +298,14 @@ TEST_F(GoldenChecker, AnotherRendererIsSkippedWithAPlainMessage) {
   EXPECT_NE(out.skip_reason.find("run scripts/update-goldens to create references for " + out.renderer.key),
             std::string::npos)
       << out.skip_reason;
+}
+
+TEST(GoldenCheckerInCi, ARendererWithoutReferencesFailsWhenCiIsSet) {
+  EXPECT_TRUE(references_required("true"));
+  EXPECT_TRUE(references_required("1"));
+  EXPECT_FALSE(references_required(nullptr));
+  EXPECT_FALSE(references_required("false"));
+  EXPECT_FALSE(references_required(""));
 }
 
 TEST_F(GoldenChecker, UpdateFixesOnlyWhatAChangedDriveBrokeAndSaysSo) {

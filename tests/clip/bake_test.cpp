@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 // Bakes: a clip simulated once, rendered by frame ranges, joined without re-encoding.
 
 #include <gtest/gtest.h>

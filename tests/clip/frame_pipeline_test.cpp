@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 // The overlapped frame loop: the stages hand frames on in order, a failure anywhere stops
 // the run with that error, and a clip comes out bit for bit the same with and without the
 // overlap.

@@ -172,21 +172,5 @@ TEST(ColorMaps, ContractingRegionTurnsTowardsTheShortenedColour) {
   EXPECT_GT(sim::activation(body.model.regions[0].drive, 5 / 30.0, body.model.ramp_s), 0.8);
 }
 
-TEST(Determinism, TeachingVisualsAreTheSameBitsAtOneAndTwoRasterizerThreads) {
-  const auto dir = scratch("teaching_visuals_determinism");
-  for (const char* scene : {"chest-transparent", "heart-cutaway", "heart-strain"}) {
-    for (const char* threads : {"1", "2"}) {
-      const auto out = dir / (std::string(scene) + "_" + threads);
-      const auto r = run(std::string("LP_NUM_THREADS=") + threads + " " + systole() + " render " +
-                         source(std::string("scenes/") + scene + ".yaml") +
-                         " -D output.width=240 -D output.height=136 --frames 9 --no-video --png " + out.string());
-      ASSERT_EQ(r.exit_code, 0) << r.output;
-    }
-    const std::string one = read_file(dir / (std::string(scene) + "_1") / "frame_00009.png");
-    EXPECT_FALSE(one.empty()) << scene;
-    EXPECT_EQ(read_file(dir / (std::string(scene) + "_2") / "frame_00009.png"), one) << scene;
-  }
-}
-
 }  // namespace
 }  // namespace systole::test

@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 #include <gtest/gtest.h>
 
 #include <chrono>

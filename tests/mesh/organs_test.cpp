@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 // Every procedural organ besides the heart (heart_test.cpp): closed, manifold, outward,
 // well-shaped, every vertex in exactly one named part, at several levels of detail; plus
 // each organ's anatomy (size, orientation, where its parts are).

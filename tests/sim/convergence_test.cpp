@@ -1,3 +1,4 @@
+// ctest-labels: no-sanitizers
 // The solvers integrate one model: as the step shrinks, each converges, and they converge
 // to the same motion - on a gentle ball and on a body as stiff, damped and pinned as the
 // shipped heart.

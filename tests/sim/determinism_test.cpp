@@ -1,3 +1,4 @@
+// ctest-labels: no-sanitizers
 // The same model and inputs give a bit-identical State at 1 and 2 threads, for every solver.
 
 #include <gtest/gtest.h>

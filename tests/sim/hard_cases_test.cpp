@@ -1,3 +1,4 @@
+// ctest-labels: no-sanitizers
 // Hard cases, for every solver: each either stays stable (finite, bounded, volume drift
 // bounded per cycle) or is stopped by the health check with a diagnosis. Which one is a
 // property of the solver, asserted here and documented in README.md ("Solvers").

@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 // A self-driven body still reacts: a poke dents it where it lands, the dent spreads, and
 // the body settles back into its own rhythm.
 

@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 // systole bench: it proves its reference (halving, a second solver) or refuses it, measures
 // errors as a share of the motion (a motionless organ: 100 %) with each driven region's
 // beat, and keeps only undominated runs on the Pareto front.

@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 // Acceptance 2: a target from another mechanism - a key-framed mesh sequence this test
 // makes procedurally (each half of the ball shrinking about its centre with a narrow
 // pulse, the lower half later) - is matched at least 5x better after tuning than by the untuned fit.

@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 // Acceptance 1: a target made by Systole itself from known drive parameters is recovered
 // by fitting and tuning from perturbed parameters, down to the error floor that the key
 // frames' interpolation leaves.

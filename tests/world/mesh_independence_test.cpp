@@ -1,3 +1,4 @@
+// ctest-labels: no-sanitizers
 // The material does not depend on the mesh: the shipped heart at mesh detail 3, 4 and 5
 // (2,502 to 9,641 particles) beats alike - each driven region's peak-to-peak radial
 // excursion within 5 % of the finest mesh's (docs/accuracy.md, "One material at any

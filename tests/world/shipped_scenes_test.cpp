@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 // The shipped scenes (scenes/*.yaml) as a teacher uses them: each validates and renders;
 // the lungs breathe by the right amount, the heart's chambers contract in sequence, the
 // infarct barely moves while its neighbours do; and any real mesh in ../shared/meshes
@@ -255,12 +256,13 @@ TEST(Scenes, SharedMeshesBeatThroughTheOwnMeshPath) {
     if (ext != ".obj" && ext != ".stl" && ext != ".glb" && ext != ".ply") continue;
     ++count;
     const std::string file = entry.path().string();
-    // Units as PROVENANCE.md gives them; an unknown unit is taken as mm and scaled to an
-    // organ's size (the SOFA heart spans about 39 units).
+    // Units as PROVENANCE.md gives them (a GLB is in metres by the glTF specification); an
+    // unknown unit is taken as mm and scaled to an organ's size (the SOFA heart spans about
+    // 39 units).
     std::string units = "mm", scale = "1";
     if (file.find("liver") != std::string::npos) units = "cm";
-    if (file.find("kidney") != std::string::npos) units = "m";
-    if (file.find("heart") != std::string::npos) scale = "3";
+    if (file.find("kidney") != std::string::npos || ext == ".glb") units = "m";
+    if (file.find("heart") != std::string::npos && ext != ".glb") scale = "3";
     const std::string yaml = "organs:\n"
                              "  - name: organ\n"
                              "    mesh: {file: \"" + file + "\", units: " + units + "}\n"

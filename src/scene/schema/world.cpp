@@ -155,17 +155,22 @@ ValueSpec<Camera> camera_spec() {
       [](const Node& node, Camera& c, const std::string& path, const Context&) {
         if (c.orbit.enabled && !c.path.empty())
           fail(origin_of(node, "orbit"), join(path, "orbit"), "a camera has an orbit or a path, not both");
-        const auto check_view = [&](const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const std::string& key) {
+        const auto check_view = [&](const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const std::string& at,
+                                    const std::string& eye_key, const std::string& target_key) {
           const Eigen::Vector3d view = target - eye;
-          if (view.norm() < 1e-9) fail(origin_of(node, key), join(path, key), "target must differ from position");
+          if (view.norm() < 1e-9) fail(origin_of(node, at), join(path, target_key), "must differ from " + join(path, eye_key));
           if (view.normalized().cross(c.up.normalized()).norm() < 1e-6)
             fail(origin_of(node, "up"), join(path, "up"),
-                 "must not be parallel to the view direction (target - position)");
+                 "must not be parallel to the view direction, from " + join(path, eye_key) + " to " +
+                     join(path, target_key));
         };
         if (c.path.empty()) {
-          check_view(c.position_m, c.target_m, "target");
+          check_view(c.position_m, c.target_m, "target", "position", "target");
         } else {
-          for (const CameraKey& k : c.path) check_view(k.position_m, k.target_m, "path");
+          for (std::size_t i = 0; i < c.path.size(); ++i) {
+            const std::string key = "path[" + std::to_string(i) + "]";
+            check_view(c.path[i].position_m, c.path[i].target_m, "path", key + ".position", key + ".target");
+          }
           c.position_m = c.path.front().position_m;
           c.target_m = c.path.front().target_m;
         }
