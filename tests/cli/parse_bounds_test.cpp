@@ -1,0 +1,98 @@
+// ctest-labels: no-sanitizers
+// The scenes that exhausted the machine before the parse bounds (docs/robustness.md,
+// "Resource limits"), run through the real command line: an alias bomb in the file and in a
+// -D value, 200,000 keys, a megabyte of nesting. Each must be refused with exit 65 within 2 s
+// of CPU time and under 200 MB of peak memory, as the process itself measures them (wait4's
+// rusage). CPU time, not wall time, so a busy machine does not make the test flaky; no
+// sanitizers, whose shadow memory would be measured too.
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "support/run.h"
+
+extern char** environ;
+
+namespace systole::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Measured {
+  int exit_code = -1;
+  double cpu_s = 0;
+  double peak_mb = 0;
+};
+
+/// Runs systole with `args` (stderr to /dev/null) and measures it.
+Measured measure(std::vector<std::string> args) {
+  args.insert(args.begin(), SYSTOLE_BINARY);
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  Measured m;
+  const int spawned = posix_spawn(&pid, SYSTOLE_BINARY, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return m;
+  int status = 0;
+  rusage usage{};
+  ::wait4(pid, &status, 0, &usage);
+  m.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  m.cpu_s = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  m.peak_mb = usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux.
+  return m;
+}
+
+/// Nine levels of nine aliases each: 387 million values once expanded.
+std::string laughs(const std::string& indent, const std::string& separator) {
+  std::string yaml = indent + "a0: &a0 [x, x, x, x, x, x, x, x, x]";
+  for (int level = 1; level <= 9; ++level) {
+    const std::string prev = "*a" + std::to_string(level - 1);
+    yaml += separator + indent + "a" + std::to_string(level) + ": &a" + std::to_string(level) + " [" + prev;
+    for (int k = 1; k < 9; ++k) yaml += ", " + prev;
+    yaml += "]";
+  }
+  return yaml;
+}
+
+const char* const kOrgans = "organs: [{name: heart, mesh: {procedural: heart, detail: 1}}]\n";
+
+void expect_refused_cheaply(const std::string& what, const Measured& m) {
+  SCOPED_TRACE(what);
+  EXPECT_EQ(m.exit_code, 65);
+  EXPECT_LT(m.cpu_s, 2.0) << "seconds of CPU";
+  EXPECT_LT(m.peak_mb, 200.0) << "MB at peak";
+  std::printf("[ bounds   ] %s: exit %d, %.2f s CPU, %.0f MB peak\n", what.c_str(), m.exit_code, m.cpu_s, m.peak_mb);
+}
+
+TEST(ParseBounds, HostileScenesAreRefusedWithinTwoSecondsAndTwoHundredMegabytes) {
+  const fs::path dir = scratch("parse_bounds");
+  write_file(dir / "bomb.yaml", std::string(kOrgans) + "bomb:\n" + laughs("  ", "\n") + "\n");
+  expect_refused_cheaply("alias bomb in the file", measure({"validate", (dir / "bomb.yaml").string()}));
+
+  write_file(dir / "plain.yaml", kOrgans);
+  expect_refused_cheaply("alias bomb in -D", measure({"validate", (dir / "plain.yaml").string(), "-D",
+                                                      "organs.0.mesh={" + laughs("", ", ") + "}"}));
+
+  std::string keys = std::string(kOrgans) + "camera:\n";
+  for (int k = 0; k < 200000; ++k) keys += "  key" + std::to_string(k) + ": 1\n";
+  write_file(dir / "keys.yaml", keys);
+  expect_refused_cheaply("200,000 keys", measure({"validate", (dir / "keys.yaml").string()}));
+
+  write_file(dir / "deep.yaml", std::string(kOrgans) + "deep: " + std::string(1 << 20, '[') + "\n");
+  expect_refused_cheaply("a megabyte of nesting", measure({"validate", (dir / "deep.yaml").string()}));
+}
+
+}  // namespace
+}  // namespace systole::test
