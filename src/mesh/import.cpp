@@ -3,6 +3,7 @@
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
+#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -70,6 +72,72 @@ void drop_unused_vertices(OrganMesh& mesh) {
   for (Eigen::Vector3i& t : mesh.surface.triangles) {
     for (int k = 0; k < 3; ++k) t[k] = remap[static_cast<size_t>(t[k])];
   }
+  for (auto& membership : mesh.also_in) membership.first = remap[static_cast<size_t>(membership.first)];
+  mesh.normalize_membership();  // Drops the pairs of removed vertices (now -1).
+}
+
+/// The parts a file's author named, as OrganMesh parts: every mesh by its name, a mesh of
+/// several primitives also by the name they share (assimp reads glTF primitives as meshes
+/// "name-0", "name-1", ...), every node by its name with the meshes it and its children hold
+/// (so a group node is the union of its parts), and every material by its name.
+class FileParts {
+ public:
+  explicit FileParts(OrganMesh& mesh) : mesh_(mesh) {}
+
+  /// Mesh `index` holds vertices [first, first + count): its own name is their first part.
+  void add_mesh(unsigned index, const std::string& name, int first, int count) {
+    ranges_.resize(std::max<std::size_t>(ranges_.size(), index + 1), {0, 0});
+    ranges_[index] = {first, count};
+    const int part = part_named(name);
+    for (int v = first; v < first + count; ++v) mesh_.vertex_part.push_back(part);
+  }
+
+  /// A further name for the vertices of meshes `indices`.
+  void add_name(const std::string& name, const std::vector<unsigned>& indices) {
+    if (name.empty()) return;
+    const int part = part_named(name);
+    for (unsigned index : indices) {
+      if (index >= ranges_.size()) continue;
+      const auto [first, count] = ranges_[index];
+      for (int v = first; v < first + count; ++v) mesh_.also_in.emplace_back(v, part);
+    }
+  }
+
+  /// Node names: each node names the meshes it and its descendants hold. Returns those.
+  std::vector<unsigned> add_nodes(const aiNode* node) {
+    std::vector<unsigned> held;
+    if (node == nullptr) return held;
+    for (unsigned i = 0; i < node->mNumMeshes; ++i) held.push_back(node->mMeshes[i]);
+    for (unsigned i = 0; i < node->mNumChildren; ++i) {
+      const std::vector<unsigned> below = add_nodes(node->mChildren[i]);
+      held.insert(held.end(), below.begin(), below.end());
+    }
+    if (node->mParent != nullptr) add_name(node->mName.C_Str(), held);  // The root is the whole file.
+    return held;
+  }
+
+ private:
+  int part_named(const std::string& name) {
+    int part = mesh_.part_index(name);  // Meshes of the same name form one part.
+    if (part < 0) {
+      part = static_cast<int>(mesh_.part_names.size());
+      mesh_.part_names.push_back(name);
+    }
+    return part;
+  }
+
+  OrganMesh& mesh_;
+  std::vector<std::pair<int, int>> ranges_;  // Per assimp mesh: first vertex, count.
+};
+
+/// "heart-2" -> "heart" (the name assimp gives a glTF mesh's third primitive), or "".
+std::string primitive_base(const std::string& name) {
+  const auto dash = name.rfind('-');
+  if (dash == std::string::npos || dash == 0 || dash + 1 == name.size()) return {};
+  for (std::size_t i = dash + 1; i < name.size(); ++i) {
+    if (!std::isdigit(static_cast<unsigned char>(name[i]))) return {};
+  }
+  return name.substr(0, dash);
 }
 
 void check_readable(const std::filesystem::path& file) {
@@ -212,17 +280,15 @@ OrganMesh import_mesh(const std::filesystem::path& file) {
 
   OrganMesh mesh;
   TriangleMesh& surface = mesh.surface;
+  FileParts parts(mesh);
+  std::map<std::string, std::vector<unsigned>> primitives;  // Base name -> its meshes.
+  std::map<std::string, std::vector<unsigned>> materials;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     const aiMesh* source = scene->mMeshes[m];
     if (source == nullptr || !(source->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
     std::string name = source->mName.C_Str();
     if (name.empty()) name = node_name_of_mesh(scene->mRootNode, m);
     if (name.empty()) name = "mesh" + std::to_string(m);
-    int part = mesh.part_index(name);  // Meshes of the same name form one part.
-    if (part < 0) {
-      part = static_cast<int>(mesh.part_names.size());
-      mesh.part_names.push_back(name);
-    }
 
     const int base = static_cast<int>(surface.positions.size());
     for (unsigned v = 0; v < source->mNumVertices; ++v) {
@@ -232,7 +298,14 @@ OrganMesh import_mesh(const std::filesystem::path& file) {
         throw Error(ExitCode::kDataError, file.string() + ": mesh '" + name + "' has a non-finite vertex coordinate");
       }
       surface.positions.push_back(position);
-      mesh.vertex_part.push_back(part);
+    }
+    parts.add_mesh(m, name, base, static_cast<int>(source->mNumVertices));
+    if (const std::string shared = primitive_base(name); !shared.empty()) primitives[shared].push_back(m);
+    if (source->mMaterialIndex < scene->mNumMaterials) {
+      aiString material;
+      if (scene->mMaterials[source->mMaterialIndex]->Get(AI_MATKEY_NAME, material) == AI_SUCCESS) {
+        materials[material.C_Str()].push_back(m);
+      }
     }
     for (unsigned f = 0; f < source->mNumFaces; ++f) {
       const aiFace& face = source->mFaces[f];
@@ -247,6 +320,15 @@ OrganMesh import_mesh(const std::filesystem::path& file) {
       surface.triangles.push_back(triangle);
     }
   }
+  parts.add_nodes(scene->mRootNode);
+  for (const auto& [name, meshes] : primitives) {
+    if (meshes.size() > 1) parts.add_name(name, meshes);  // Two or more primitives of one mesh.
+  }
+  // assimp names a material it made up itself "DefaultMaterial": not the author's name.
+  for (const auto& [name, meshes] : materials) {
+    if (name != AI_DEFAULT_MATERIAL_NAME) parts.add_name(name, meshes);
+  }
+  mesh.normalize_membership();
   if (surface.triangles.empty()) {
     throw Error(ExitCode::kDataError, file.string() + ": the file holds no triangles");
   }

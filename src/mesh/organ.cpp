@@ -1,6 +1,7 @@
 #include "mesh/organ.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -31,14 +32,14 @@ std::string part_list(const OrganMesh& mesh) {
   return text;
 }
 
-// Whether a vertex of part `part` at `p` is selected; `selector_part` is the index of a
-// kPart selector's part (resolved once by the caller).
-bool selects(const scene::Selector& selector, int selector_part, int part, const Eigen::Vector3d& p) {
+// Whether a vertex at `p` is selected; `in_part` says whether it belongs to a kPart
+// selector's part (resolved once by the caller).
+bool selects(const scene::Selector& selector, bool in_part, const Eigen::Vector3d& p) {
   switch (selector.kind) {
     case scene::SelectorKind::kAll:
       return true;
     case scene::SelectorKind::kPart:
-      return part == selector_part;
+      return in_part;
     case scene::SelectorKind::kSphere:
       return (p - selector.center).squaredNorm() <= selector.radius_m * selector.radius_m;
     case scene::SelectorKind::kBox:
@@ -125,17 +126,22 @@ std::vector<int> assign_regions(const OrganMesh& mesh, const std::vector<scene::
     }
     std::vector<char> chosen(positions.size(), 0);
     for (const scene::Selector& selector : select) {
-      int part = -1;
+      std::vector<char> in_part;
       if (selector.kind == scene::SelectorKind::kPart) {
-        part = mesh.part_index(selector.part);
+        const int part = mesh.part_index(selector.part);
         if (part < 0) {
           throw Error(ExitCode::kDataError, where(selector.origin) + "region '" + region.name + "': the mesh has no part '" +
                                                 selector.part + "' (" + part_list(mesh) + ")");
         }
+        in_part = mesh.part_mask(part);
+        if (std::find(in_part.begin(), in_part.end(), 1) == in_part.end()) {
+          throw Error(ExitCode::kDataError, where(selector.origin) + "region '" + region.name + "': the mesh's part '" +
+                                                selector.part + "' has no triangle (only points or lines, which are "
+                                                "not read): select another part");
+        }
       }
       for (size_t v = 0; v < positions.size(); ++v) {
-        const int vertex_part = v < mesh.vertex_part.size() ? mesh.vertex_part[v] : -1;
-        chosen[v] |= selects(selector, part, vertex_part, positions[v]);
+        chosen[v] |= selects(selector, !in_part.empty() && in_part[v], positions[v]);
       }
     }
     int count = 0;

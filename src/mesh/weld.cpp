@@ -94,6 +94,18 @@ int weld(OrganMesh& mesh, double tolerance) {
     new_positions.push_back(positions[static_cast<size_t>(i)]);
     if (has_parts) new_parts.push_back(mesh.vertex_part[static_cast<size_t>(i)]);
   }
+  // A merged vertex keeps the first one's part and belongs to every merged one's too, so a
+  // part that lies on another (a valve on a chamber wall) keeps its vertices.
+  if (has_parts) {
+    for (int i = 0; i < n; ++i) {
+      const int part = mesh.vertex_part[static_cast<size_t>(i)];
+      const int into = remap[static_cast<size_t>(i)];
+      if (part >= 0 && new_parts[static_cast<size_t>(into)] != part) mesh.also_in.emplace_back(into, part);
+    }
+  }
+  for (auto& membership : mesh.also_in) {
+    if (membership.first >= 0 && membership.first < n) membership.first = remap[static_cast<size_t>(membership.first)];
+  }
 
   std::vector<Eigen::Vector3i> triangles;
   triangles.reserve(mesh.surface.triangles.size());
@@ -112,6 +124,7 @@ int weld(OrganMesh& mesh, double tolerance) {
   positions = std::move(new_positions);
   mesh.surface.triangles = std::move(triangles);
   if (has_parts) mesh.vertex_part = std::move(new_parts);
+  mesh.normalize_membership();
   return removed;
 }
 

@@ -6,8 +6,9 @@
 
 namespace systole::mesh {
 
-/// Merges vertices closer than `tolerance` (same unit as the positions), keeps the first
-/// vertex's part, drops triangles that collapse. Returns the number of vertices removed.
+/// Merges vertices closer than `tolerance` (same unit as the positions): the merged vertex
+/// belongs to the first vertex's part first and to every other merged vertex's part too
+/// (OrganMesh::also_in); drops triangles that collapse. Returns the number of vertices removed.
 /// Deterministic: the result depends only on the input order.
 int weld(OrganMesh& mesh, double tolerance);
 

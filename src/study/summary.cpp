@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "clip/video_format.h"
+#include "mesh/inspect.h"
 #include "sim/solvers/step_size.h"
 
 namespace systole::study {
@@ -25,6 +26,19 @@ void summarize_regions(std::ostringstream& s, const scene::Organ& organ, const w
     }
     if (region.stiffness_scale != 1.0) s << ", stiffness x" << region.stiffness_scale;
     s << "\n";
+  }
+}
+
+/// The mesh's parts, as a region's `part:` selector names them, with their triangles and
+/// whether each is closed on its own: how a user finds what to drive and what to pin in a
+/// file of many parts (a part that only touches others has no triangle of its own).
+void summarize_parts(std::ostringstream& s, const world::OrganBody& body) {
+  const mesh::OrganMesh& m = body.geometry.mesh;
+  if (m.part_names.empty()) return;
+  s << "  parts (select with `part: NAME`):\n";
+  for (std::size_t p = 0; p < m.part_names.size(); ++p) {
+    const mesh::MeshReport r = mesh::inspect(m.part_surface(static_cast<int>(p)));
+    s << "    " << m.part_names[p] << ": " << r.triangles << " triangles, " << (r.closed() ? "closed" : "open") << "\n";
   }
 }
 
@@ -118,6 +132,7 @@ std::string summarize(const scene::Scene& scene, const world::World& world) {
     s << "organ " << organ.name << ": " << report.vertices << " vertices, " << report.triangles << " triangles, "
       << (report.closed() ? "closed" : "open") << ", volume " << report.volume_m3 * 1e6 << " cm^3\n";
     for (const auto& note : report.notes) s << "  mesh: " << note << "\n";
+    summarize_parts(s, body);
     summarize_regions(s, organ, body);
     summarize_model(s, organ, body, world.dt_s);
   }

@@ -106,4 +106,80 @@ inline void write_gltf(const std::filesystem::path& file, const TriangleMesh& m,
   std::ofstream(file, std::ios::binary) << json;
 }
 
+/// One part of a multi-part glTF: a node holding a mesh of one or more primitives, each
+/// with a material.
+struct GltfPart {
+  std::string node, mesh, material;
+  std::vector<TriangleMesh> primitives;
+};
+
+/// A static glTF 2.0 file (buffer embedded) the way anatomical atlases are built: group
+/// nodes (name, parts) over part nodes, and loose part nodes at the top.
+inline void write_parts_gltf(const std::filesystem::path& file,
+                             const std::vector<std::pair<std::string, std::vector<GltfPart>>>& groups,
+                             const std::vector<GltfPart>& loose = {}) {
+  std::string buffer, views, accessors, meshes, nodes, materials;
+  std::vector<std::string> material_names;
+  int view_count = 0, accessor_count = 0, mesh_count = 0, node_count = 0;
+  auto add_view = [&](std::pair<std::size_t, std::size_t> range) {
+    views += (view_count ? "," : "") + std::string(R"({"buffer":0,"byteOffset":)") + std::to_string(range.first) +
+             R"(,"byteLength":)" + std::to_string(range.second) + "}";
+    return view_count++;
+  };
+  auto material_of = [&](const std::string& name) {
+    for (std::size_t i = 0; i < material_names.size(); ++i) {
+      if (material_names[i] == name) return static_cast<int>(i);
+    }
+    material_names.push_back(name);
+    return static_cast<int>(material_names.size() - 1);
+  };
+  auto add_part = [&](const GltfPart& part) {
+    std::string primitives;
+    for (const TriangleMesh& m : part.primitives) {
+      std::vector<float> positions;
+      Eigen::Vector3f lo = Eigen::Vector3f::Constant(1e9f), hi = -lo;
+      for (const auto& p : m.positions) {
+        for (int k = 0; k < 3; ++k) positions.push_back(float(p[k]));
+        lo = lo.cwiseMin(p.cast<float>()), hi = hi.cwiseMax(p.cast<float>());
+      }
+      std::vector<std::uint32_t> indices;
+      for (const auto& t : m.triangles) indices.insert(indices.end(), {std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])});
+      const int position_view = add_view(append(buffer, positions)), index_view = add_view(append(buffer, indices));
+      auto vec3 = [](const Eigen::Vector3f& v) {
+        return "[" + std::to_string(v.x()) + "," + std::to_string(v.y()) + "," + std::to_string(v.z()) + "]";
+      };
+      accessors += (accessor_count ? "," : "") + std::string(R"({"bufferView":)") + std::to_string(position_view) +
+                   R"(,"componentType":5126,"count":)" + std::to_string(m.positions.size()) + R"(,"type":"VEC3","min":)" +
+                   vec3(lo) + R"(,"max":)" + vec3(hi) + "}";
+      accessors += R"(,{"bufferView":)" + std::to_string(index_view) + R"(,"componentType":5125,"count":)" +
+                   std::to_string(indices.size()) + R"(,"type":"SCALAR"})";
+      primitives += (primitives.empty() ? "" : ",") + std::string(R"({"attributes":{"POSITION":)") +
+                    std::to_string(accessor_count) + R"(},"indices":)" + std::to_string(accessor_count + 1) +
+                    R"(,"material":)" + std::to_string(material_of(part.material)) + "}";
+      accessor_count += 2;
+    }
+    meshes += (mesh_count ? "," : "") + std::string(R"({"name":")") + part.mesh + R"(","primitives":[)" + primitives + "]}";
+    nodes += (node_count ? "," : "") + std::string(R"({"name":")") + part.node + R"(","mesh":)" + std::to_string(mesh_count) + "}";
+    ++mesh_count;
+    return node_count++;
+  };
+  std::string roots;
+  for (const auto& [group, parts] : groups) {
+    std::string children;
+    for (const GltfPart& part : parts) children += (children.empty() ? "" : ",") + std::to_string(add_part(part));
+    nodes += (node_count ? "," : "") + std::string(R"({"name":")") + group + R"(","children":[)" + children + "]}";
+    roots += (roots.empty() ? "" : ",") + std::to_string(node_count++);
+  }
+  for (const GltfPart& part : loose) roots += (roots.empty() ? "" : ",") + std::to_string(add_part(part));
+  for (std::size_t i = 0; i < material_names.size(); ++i) {
+    materials += (i ? "," : "") + std::string(R"({"name":")") + material_names[i] + R"("})";
+  }
+  std::string json = R"({"asset":{"version":"2.0"},"scene":0,)";
+  json += R"("buffers":[{"byteLength":)" + std::to_string(buffer.size()) +
+          R"(,"uri":"data:application/octet-stream;base64,)" + base64(buffer) + R"("}],)";
+  json += R"("bufferViews":[)" + views + R"(],"accessors":[)" + accessors + R"(],"materials":[)" + materials +
+          R"(],"meshes":[)" + meshes + R"(],"nodes":[)" + nodes + R"(],"scenes":[{"nodes":[)" + roots + "]}]}";
+  std::ofstream(file, std::ios::binary) << json;
+}
+
 }  // namespace systole::mesh::testing

@@ -8,7 +8,9 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "gltf_writer.h"
 #include "mesh/inspect.h"
+#include "mesh/organ.h"
 #include "test_meshes.h"
 
 namespace systole::mesh {
@@ -71,6 +73,59 @@ TEST(Import, ObjObjectsBecomeParts) {
     const bool is_left = m.surface.positions[v].x() < 2;
     EXPECT_EQ(m.vertex_part[v], m.part_index(is_left ? "left" : "right"));
   }
+}
+
+/// A cube 5 cm on a side with its lowest corner at (x, 0, 0).
+TriangleMesh cube_at(double x) {
+  TriangleMesh c = testing::cube();
+  for (auto& p : c.positions) p = 0.05 * p + Eigen::Vector3d(x, 0, 0);
+  return c;
+}
+
+int count_of(const std::vector<char>& mask) { return static_cast<int>(std::count(mask.begin(), mask.end(), 1)); }
+
+// An atlas-like file: a group node "chambers" over a node "left" (one cube) and a node
+// "right" whose mesh has two primitives (two cubes), and a loose "valve" whose triangle lies
+// on three corners of the left cube, so welding makes its vertices the cube's.
+TEST(Import, PartsAreTheFilesNodesGroupsMeshesAndMaterialsAndSharedVerticesBelongToEach) {
+  TriangleMesh valve;
+  const TriangleMesh left = cube_at(0);
+  valve.positions = {left.positions[1], left.positions[3], left.positions[5]};  // Corners at x = 0.05.
+  valve.triangles = {{0, 1, 2}};
+  const auto file = testing::scratch("atlas.gltf");
+  testing::write_parts_gltf(file,
+                            {{"chambers",
+                              {{"left", "left_mesh", "muscle", {left}},
+                               {"right", "right_mesh", "muscle", {cube_at(0.1), cube_at(0.2)}}}}},
+                            {{"valve", "valve_mesh", "leaflet", {valve}}});
+  const OrganMesh m = import_mesh(file);
+  ASSERT_EQ(m.surface.positions.size(), 24u) << "three cubes; the valve's corners welded into the left one";
+  const auto mask = [&](const std::string& name) {
+    const int part = m.part_index(name);
+    EXPECT_GE(part, 0) << "no part '" << name << "'";
+    return part < 0 ? std::vector<char>() : m.part_mask(part);
+  };
+  EXPECT_EQ(count_of(mask("left")), 8);
+  EXPECT_EQ(count_of(mask("left_mesh")), 8);
+  EXPECT_EQ(count_of(mask("right")), 16) << "a node's mesh with two primitives";
+  EXPECT_EQ(count_of(mask("right_mesh")), 16) << "the mesh's own name, for both its primitives";
+  EXPECT_EQ(count_of(mask("right_mesh-1")), 8) << "and each primitive as assimp names it";
+  EXPECT_EQ(count_of(mask("chambers")), 24) << "a group node holds every mesh under it";
+  EXPECT_EQ(count_of(mask("muscle")), 24) << "a material";
+  EXPECT_EQ(count_of(mask("leaflet")), 3);
+  const std::vector<char> valve_mask = mask("valve"), left_mask = mask("left");
+  ASSERT_EQ(count_of(valve_mask), 3) << "a part lying on another keeps its vertices";
+  for (std::size_t v = 0; v < valve_mask.size(); ++v) {
+    if (valve_mask[v]) EXPECT_TRUE(left_mask[v]) << "each shared vertex belongs to both parts";
+  }
+
+  // As regions: the group, the valve on it, by the file's own names.
+  scene::Region chambers, valve_region;
+  chambers.name = "chambers";
+  valve_region.name = "valve";
+  const std::vector<int> region = assign_regions(m, {chambers, valve_region});
+  EXPECT_EQ(std::count(region.begin(), region.end(), 1), 3) << "the valve, listed last, keeps its vertices";
+  EXPECT_EQ(std::count(region.begin(), region.end(), 0), 21);
 }
 
 TEST(Import, AsciiStlIsWeldedClosed) {
