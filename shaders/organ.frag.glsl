@@ -14,6 +14,7 @@ const int kLightCount = LIGHT_COUNT;
 const int kLightArraySize = kLightCount > 0 ? kLightCount : 1;  // GLSL has no empty arrays.
 const float kWrap = 0.3;         // how far light wraps past the terminator, unit: 1 (of N.L)
 const float kRim = 0.07;         // rim light strength, unit: 1
+const float kInsideShade = 0.6;  // an open surface's inner side, lit but in its own shadow, unit: 1
 const float kWetShare = 0.6;     // the glint's share of the material's specular, unit: 1
 
 in vec3 v_position;
@@ -85,7 +86,9 @@ void main() {
     return;
   }
 #endif
-  vec3 n = normalize(v_normal);
+  // A back face reaches here only on a two-sided (open) surface: it is lit as the side the
+  // eye sees. Closed surfaces cull back faces, so for them this is the plain normal.
+  vec3 n = normalize(gl_FrontFacing ? v_normal : -v_normal);
   vec3 v = normalize(u_camera_position - v_position);
   vec3 albedo = v_albedo;
   // The tissue's hue at full strength: a saturated red scatters red, a pale region scatters white.
@@ -115,5 +118,6 @@ void main() {
   float rim = grazing2 * grazing2;
   color += kRim * rim * mix(u_sky, vec3(1.0), 0.5) * (0.5 + 0.5 * hue);
 
+  if (!gl_FrontFacing) color *= kInsideShade;
   emit(linear_to_srgb(color));
 }

@@ -136,6 +136,9 @@ ClipSurfaces add_surfaces(render::Renderer& renderer, const scene::Scene& scene,
                                          render::static_vertex_colors(organ, body.geometry.vertex_region),
                                          organ.material, vertex_opacity(organ, body.geometry.vertex_region)));
     if (organ.clip.enabled) renderer.set_clip(s.ids.back(), organ.clip);
+    // An open surface (an atlas part, a sheet) would show nothing through its holes or
+    // from behind with its back faces culled.
+    renderer.set_two_sided(s.ids.back(), !body.geometry.report.closed());
     if (const render::OrganColorMap map = render::organ_color_map(organ); map.has) {
       s.dynamic[o].emplace();
       s.dynamic[o]->map = map.map;

@@ -40,6 +40,7 @@ struct Surface {
   float min_opacity = 1;  ///< Below kOpaqueFrom: a part goes through the transparent pass.
   float max_opacity = 1;  ///< From kOpaqueFrom: a part goes through the opaque pass.
   scene::ClipPlane clip;  ///< The surface's own cut (set_clip).
+  bool two_sided = false; ///< Back faces drawn (set_two_sided).
   bool uploaded = false;         ///< update_surface has given it positions.
   Eigen::Vector3d box_min = Eigen::Vector3d::Zero();  ///< Bounds of the last upload. unit: m
   Eigen::Vector3d box_max = Eigen::Vector3d::Zero();
@@ -281,6 +282,14 @@ void Renderer::update_colors(int id, const float* colors_rgb) {
   glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(s.vertex_count * 3 * sizeof(float)), colors_rgb);
 }
 
+void Renderer::set_two_sided(int id, bool two_sided) {
+  Impl& r = *impl_;
+  if (id < 0 || static_cast<std::size_t>(id) >= r.surfaces.size()) {
+    fail("set_two_sided: unknown surface id " + std::to_string(id));
+  }
+  r.surfaces[static_cast<std::size_t>(id)].two_sided = two_sided;
+}
+
 void Renderer::set_clip(int id, const scene::ClipPlane& clip) {
   Impl& r = *impl_;
   if (id < 0 || static_cast<std::size_t>(id) >= r.surfaces.size()) {
@@ -392,14 +401,13 @@ void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene:
         glUniform4fv(program.loc.clip_plane, 1, plane.data());
         glUniform3fv(program.loc.cut_color, 1, cut.data());
         glEnable(GL_CLIP_DISTANCE0);
-        glDisable(GL_CULL_FACE);  // The inside, seen through the cut, is the cut face.
       }
+      // Through a cut the inside shows as the cut face; an open surface shows its back.
+      if (clip.enabled || s.two_sided) glDisable(GL_CULL_FACE);
       glBindVertexArray(s.vao);
       glDrawElements(GL_TRIANGLES, s.index_count, GL_UNSIGNED_INT, nullptr);
-      if (clip.enabled) {
-        glDisable(GL_CLIP_DISTANCE0);
-        glEnable(GL_CULL_FACE);
-      }
+      if (clip.enabled) glDisable(GL_CLIP_DISTANCE0);
+      if (clip.enabled || s.two_sided) glEnable(GL_CULL_FACE);
     };
     if (p.source->surfaces.empty()) {
       for (const Surface& s : r.surfaces) draw_one(s);

@@ -184,6 +184,21 @@ TEST(Renderer, BackFacesAreCulled) {
   EXPECT_EQ(covered_pixels(render(renderer, camera_at(-2))), 0);
 }
 
+TEST(Renderer, ATwoSidedSurfaceSeenFromBehindIsLitAsTheSideTheEyeSees) {
+  Renderer renderer(kWidth, kHeight, 0);
+  const Shape tri = triangle(0.5f, 0);
+  const int id = add(renderer, tri, colors(tri, kOrgan));
+  renderer.set_two_sided(id, true);
+  const Image front = render(renderer, camera_at(2));
+  scene::Light from_behind;
+  from_behind.direction = Eigen::Vector3d(0, 0, 1);  // Travels towards +z: lights the back.
+  const Image back = render(renderer, camera_at(-2), {from_behind});
+  EXPECT_GT(covered_pixels(back), 500) << "an open triangle seen from behind is drawn";
+  EXPECT_EQ(covered_pixels(back), covered_pixels(front)) << "mirror images cover as much";
+  EXPECT_GT(luminance(back, kWidth / 2, kHeight / 2 + 5), luminance(front, kWidth / 2, kHeight / 2 + 5) / 2)
+      << "lit from the eye's side, not dark as a back face";
+}
+
 TEST(Renderer, LitSideIsBrighter) {
   Renderer renderer(kWidth, kHeight, 4);
   const Shape sphere = uv_sphere(Eigen::Vector3f::Zero(), 0.5f, 24, 32);
