@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "cli/command.h"
+#include "clip/camera_framing.h"
 #include "clip/limits.h"
 #include "scene/load.h"
 #include "study/summary.h"
@@ -37,7 +38,9 @@ Command add_validate_command(CLI::App& app) {
             clip::check_scene_limits(scene, {scene.output.frame_count(), true, false}, limits);
             const auto world = world::build_world(scene);
             clip::check_world_limits(scene, world, limits);
-            std::cout << study::summarize(scene, world) << "ok\n";
+            const auto placed = clip::with_cameras_placed(scene, world);
+            clip::check_organs_in_view(placed, world);
+            std::cout << study::summarize(placed, world) << "ok\n";
             return 0;
           }};
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "clip/bake.h"
+#include "clip/camera_framing.h"
 #include "clip/camera_motion.h"
 #include "clip/frame_list.h"
 #include "clip/frame_pipeline.h"
@@ -324,15 +325,17 @@ class ClipFrames {
 
 }  // namespace
 
-StageTimes render_clip(const scene::Scene& scene, const RenderRequest& request) {
+StageTimes render_clip(const scene::Scene& given, const RenderRequest& request) {
   const auto start = Clock::now();
   StageTimes times;
-  const auto& out = scene.output;
+  const auto& out = given.output;
   const std::vector<int> frames = selected_frames(request, out.frame_count());
-  check_scene_limits(scene, {static_cast<int>(frames.size()), !request.video.empty(), !request.png_dir.empty()},
+  check_scene_limits(given, {static_cast<int>(frames.size()), !request.video.empty(), !request.png_dir.empty()},
                      request.limits);
-  world::World world = world::build_world(scene);
-  check_world_limits(scene, world, request.limits);
+  world::World world = world::build_world(given);
+  check_world_limits(given, world, request.limits);
+  const scene::Scene scene = with_cameras_placed(given, world);
+  check_organs_in_view(scene, world);
   const int msaa = out.antialias == scene::Antialias::kMsaa4 ? 4 : out.antialias == scene::Antialias::kMsaa2 ? 2 : 0;
   render::Renderer renderer(out.width, out.height, msaa);
   ClipFrames clip(scene, request, frames, world, renderer, times);

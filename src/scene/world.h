@@ -53,6 +53,11 @@ struct Orbit {
 /// The camera at time 0 (position, target) and how it moves: fixed, an orbit, or a path
 /// (app/camera_motion.h gives the camera at any time).
 struct Camera {
+  /// No position or path given (or `camera: auto`): clip/camera_framing.h places the eye on
+  /// +z of the organs' bounding sphere, looking at its centre, so that it fills `fill` of
+  /// the frame's smaller side. position_m and target_m hold the result once placed.
+  bool automatic = true;
+  double fill = 0.8;  ///< unit: 1
   Eigen::Vector3d position_m = Eigen::Vector3d(0, 0, 0.4);  ///< unit: m
   Eigen::Vector3d target_m = Eigen::Vector3d::Zero();       ///< unit: m
   Eigen::Vector3d up = Eigen::Vector3d::UnitY();            ///< unit: 1

@@ -140,6 +140,10 @@ std::string summarize(const scene::Scene& scene, const world::World& world) {
     << world.steps_per_frame << " steps per frame)";
   for (const auto& body : world.organs) s << ", " << body.model.name << " " << body.model.substeps << " substeps";
   s << "\n  why: " << world.step_reason << "\n";
+  const auto& camera = scene.camera;
+  s << "camera: " << (camera.automatic ? "frames the organs (no position given): " : "") << "at ("
+    << camera.position_m.x() << ", " << camera.position_m.y() << ", " << camera.position_m.z() << ") m looking at ("
+    << camera.target_m.x() << ", " << camera.target_m.y() << ", " << camera.target_m.z() << ") m\n";
   summarize_output(s, scene);
   summarize_overlay(s, scene.overlay);
   return s.str();

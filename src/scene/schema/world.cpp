@@ -3,6 +3,7 @@
 #include "scene/schema/parts.h"
 
 #include <Eigen/Geometry>
+#include <cmath>
 
 namespace systole::scene::schema {
 
@@ -139,10 +140,15 @@ ValueSpec<Camera> camera_spec() {
                              return std::string();
                            },
                            "1..1024 keys, times increasing");
-  return map<Camera>(
+  auto camera = map<Camera>(
       {
-          field("position", vec3(Dimension::kLength), &Camera::position_m, "Eye position."),
-          field("target", vec3(Dimension::kLength), &Camera::target_m, "Point looked at."),
+          field("position", vec3(Dimension::kLength), &Camera::position_m,
+                "Eye position. Without one (and without a path) the camera frames the organs itself.")
+              .shown_default("auto"),
+          field("target", vec3(Dimension::kLength), &Camera::target_m, "Point looked at (with `position`).")
+              .shown_default("auto"),
+          field("fill", number(open_closed(0, 1)), &Camera::fill,
+                "With no `position`: the share of the frame's smaller side the organs' bounding sphere fills."),
           field("up", direction(), &Camera::up, "Up direction (not parallel to the view)."),
           field("fov", quantity(Dimension::kAngle, open(1, 170)), &Camera::fov_rad, "Vertical field of view."),
           field("orbit", orbit, &Camera::orbit,
@@ -155,6 +161,18 @@ ValueSpec<Camera> camera_spec() {
       [](const Node& node, Camera& c, const std::string& path, const Context&) {
         if (c.orbit.enabled && !c.path.empty())
           fail(origin_of(node, "orbit"), join(path, "orbit"), "a camera has an orbit or a path, not both");
+        c.automatic = node.find("position") == nullptr && c.path.empty();
+        if (c.automatic) {
+          if (node.find("target") != nullptr)
+            fail(origin_of(node, "target"), join(path, "target"),
+                 "goes with " + join(path, "position") + "; give both, or neither and the camera frames the organs");
+          if (std::abs(c.up.normalized().z()) > 1 - 1e-6)
+            fail(origin_of(node, "up"), join(path, "up"),
+                 "must not be parallel to the view direction of a camera that frames the organs (along -z)");
+          return;
+        }
+        if (node.find("fill") != nullptr)
+          fail(origin_of(node, "fill"), join(path, "fill"), "applies only to a camera that frames the organs (no position)");
         const auto check_view = [&](const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const std::string& at,
                                     const std::string& eye_key, const std::string& target_key) {
           const Eigen::Vector3d view = target - eye;
@@ -175,6 +193,17 @@ ValueSpec<Camera> camera_spec() {
           c.target_m = c.path.front().target_m;
         }
       });
+  // `camera: auto` says what no camera says, explicitly.
+  ValueSpec<Camera> spec = camera;
+  spec.range = "`auto`, or a map";
+  spec.read = [read_map = camera.read](const Node& node, Camera& c, const std::string& path, const Context& ctx) {
+    if (node.kind == Node::Kind::kScalar && node.scalar == "auto") {
+      c = Camera{};
+      return;
+    }
+    read_map(node, c, path, ctx);
+  };
+  return spec;
 }
 
 /// A warm key light from the upper left and a cool, dimmer fill from the right, so the

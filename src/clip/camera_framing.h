@@ -1,0 +1,25 @@
+#pragma once
+// Cameras that frame the organs themselves, and the check that the clip's first frame shows
+// an organ at all. A wrong unit, a mesh far from the origin or a camera looking away would
+// otherwise render a clip of empty background and exit 0.
+
+#include <vector>
+
+#include "scene/scene.h"
+#include "world/world.h"
+
+namespace systole::clip {
+
+/// `scene` with every automatic camera (scene::Camera::automatic: the scene's and each
+/// view's) placed: looking along -z at the centre of the bounding sphere of the organs it
+/// shows (at rest), from where that sphere fills camera.fill of the view's smaller angle of
+/// view. So a 1 cm organ and a 1 m organ fill the frame alike.
+scene::Scene with_cameras_placed(scene::Scene scene, const world::World& world);
+
+/// Throws Error(kDataError) when no organ covers a pixel of the clip's first frame in any
+/// view, naming the cause for each organ: behind the camera, outside the view (with where
+/// the organ is and where the camera looks), or smaller than a pixel; and what to change.
+/// Cameras must be placed (with_cameras_placed) first.
+void check_organs_in_view(const scene::Scene& scene, const world::World& world);
+
+}  // namespace systole::clip
