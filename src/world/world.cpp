@@ -70,6 +70,7 @@ World build_world(const scene::Scene& scene) {
       body.model = sim::build_model(params, body.geometry, options);
     }
     body.state = sim::initial_state(body.model);
+    body.folds = FoldWatch(organ, body.geometry);
     if (scene.solver.auto_dt) w.step_reason += " " + body.model.name + ": " + sim::step_limits(body.model).reason + ".";
     w.organs.push_back(std::move(body));
   }
@@ -86,6 +87,14 @@ void advance_to_frame(World& w, int frame) {
         std::ostringstream m;
         m << "simulation diverged at frame " << w.frames_done + 1 << " (t = " << body.state.time_s << " s): "
           << *problem << ". Remedy: " << sim::divergence_remedy(body.model) << ".";
+        throw Error(ExitCode::kDiverged, m.str());
+      }
+      render_positions(body, w.scratch_positions);
+      if (auto crumpled = body.folds.update(w.scratch_positions, body.state.time_s)) {
+        std::ostringstream m;
+        m << "simulation stopped at frame " << w.frames_done + 1 << " (t = " << body.state.time_s << " s): " << *crumpled
+          << ". Remedy: give the organ a volumetric body (body.lattice: 12) so its parts move as one, raise "
+             "body.bending, or lower the drive's amplitude.";
         throw Error(ExitCode::kDiverged, m.str());
       }
     }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mesh/organ.h"
+#include "world/fold_watch.h"
 #include "scene/scene.h"
 #include "sim/model.h"
 #include "sim/reduced.h"
@@ -19,6 +20,7 @@ struct OrganBody {
   sim::Model model;
   sim::State state;
   sim::Embedding embedding;      ///< How the render mesh follows a reduced model; empty: full model.
+  FoldWatch folds;               ///< Lasting crumpling of a driven region (checked every frame).
 };
 
 /// The body's render-mesh positions now: the particles of a full model, or the mesh
@@ -37,6 +39,7 @@ struct World {
   /// Called after every frame advance_to_frame steps through (with that frame's number),
   /// also frames that are not rendered: a trace of a simulated signal needs them all.
   std::function<void(int frame)> after_frame;
+  Eigen::Matrix3Xd scratch_positions;  ///< The health check's copy of a body's render positions.
 };
 
 /// Loads or generates every organ and builds its body. The step is the scene's dt (or, for
@@ -47,7 +50,8 @@ World build_world(const scene::Scene& scene);
 /// Steps every organ to the time of clip frame `frame`, start_s + frame * frame_s
 /// (frames only move forward), checking the
 /// bodies' health at every frame. Throws Error(kDiverged) with the frame, the time, the
-/// cause and a remedy when a body blew up.
+/// cause and a remedy when a body blew up or a driven region stayed crumpled for longer
+/// than its cycle (world/fold_watch.h).
 void advance_to_frame(World& world, int frame);
 
 }  // namespace systole::world
