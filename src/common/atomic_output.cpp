@@ -220,10 +220,11 @@ AtomicOutput::AtomicOutput(fs::path target) : target_(std::move(target)) {
                                      (holder.empty() ? std::string("its lock is '") + lock_path_.string() + "'" : holder) +
                                      "); wait for it to finish, or write to another file");
   }
+  // Only the detail of a second writer's message depends on this write, so a failure is
+  // not one of ours.
   const std::string holder = holder_text();
-  if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, holder.data(), holder.size(), 0) < 0) {
-    // Only the message a second writer would get loses its detail.
-  }
+  [[maybe_unused]] const bool written =
+      ::ftruncate(lock_fd_, 0) == 0 && ::pwrite(lock_fd_, holder.data(), holder.size(), 0) >= 0;
   lock_slot_ = register_pending(lock_path_);
 
   const std::string name = "." + target_.filename().string() + std::string(kPartialTag) + std::to_string(::getpid()) +
