@@ -168,12 +168,14 @@ TEST(Interrupt, ASecondRenderToTheSameOutputIsRefusedWhileTheFirstWrites) {
   EXPECT_TRUE(leftovers(dir).empty()) << leftovers(dir).front();
 }
 
-/// A small tmpfs mounted at `dir` for the life of the object (root only).
+/// A small tmpfs mounted at <scratch>/<name>/disk for the life of the object (root only).
 struct SmallDisk {
   fs::path dir;
   bool mounted = false;
-  SmallDisk(fs::path where, const std::string& size) : dir(std::move(where)) {
-    fs::create_directories(dir);
+  SmallDisk(const std::string& name, const std::string& size)
+      : dir(fs::path(SYSTOLE_TEST_SCRATCH) / name / "disk") {
+    ::umount2(dir.c_str(), MNT_DETACH);  // Left mounted by a run that crashed, if any.
+    fs::create_directories(scratch(name) / "disk");
     mounted = ::geteuid() == 0 && ::mount("tmpfs", dir.c_str(), "tmpfs", 0, ("size=" + size).c_str()) == 0;
   }
   ~SmallDisk() {
@@ -182,7 +184,7 @@ struct SmallDisk {
 };
 
 TEST(Interrupt, AFullDiskFailsTheRunAndLeavesTheEarlierVideoAndManifest) {
-  const SmallDisk disk(scratch("interrupt_full_disk") / "disk", "1m");
+  const SmallDisk disk("interrupt_full_disk", "1m");
   if (!disk.mounted) GTEST_SKIP() << "cannot mount a small tmpfs here (needs root and mount rights): full disk not tested";
   const Earlier earlier(disk.dir / "clip.mp4");
   // Lossless frames fill the megabyte within a second of video.
