@@ -103,7 +103,10 @@ struct Body {
   double volume_stiffness_Pa = 20000;  ///< Bulk modulus of the enclosed volume; 0 = no volume constraint. unit: Pa
   double drag_per_s = 1.0;        ///< Velocity damping towards rest (the surrounding tissue). unit: 1/s
   double bending_N_per_m = 0;     ///< Stiffness of the springs across each edge (0: no bending). unit: N/m
-  int lattice = 0;                ///< Reduced model: voxels along the longest side (0: every vertex a particle). unit: 1
+  /// Reduced model: voxels along the longest side (0: every vertex a particle), or
+  /// kLatticeAuto: world/ chooses from the mesh (world::choose_body). unit: 1
+  int lattice = kLatticeAuto;
+  static constexpr int kLatticeAuto = -1;
   /// Drives the rest volume, V0(t) = V0 (1 + amplitude * phi(t - delay)): lungs inflating.
   /// waveform kNone: a constant rest volume. Needs the volume constraint.
   Drive volume_drive;

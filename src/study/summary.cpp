@@ -55,10 +55,11 @@ void summarize_model(std::ostringstream& s, const scene::Organ& organ, const wor
   if (body.embedding.empty()) {
     s << " (full model: every vertex)";
   } else {
-    s << " (lattice " << organ.body.lattice << ": voxel corners; the " << body.geometry.report.vertices
+    s << " (lattice " << body.lattice << ": voxel corners; the " << body.geometry.report.vertices
       << " render vertices follow by embedding)";
   }
   if (pinned > 0) s << ", " << pinned << " pinned (held, not solved; no spring between two of them)";
+  s << "\n  body: " << body.body_reason;
   s << "\n  left out:";
   int left_out = 0;
   if (m.springs.bending_count == 0) s << (left_out++ ? "," : "") << " bending (body.bending is 0)";

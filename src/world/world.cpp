@@ -60,9 +60,13 @@ World build_world(const scene::Scene& scene) {
   for (const auto& organ : scene.organs) {
     OrganBody body;
     body.geometry = mesh::build_organ_geometry(organ);
-    const sim::OrganParams params = sim::organ_params(organ);
+    const BodyChoice choice = choose_body(organ, body.geometry);
+    body.lattice = choice.lattice;
+    body.body_reason = choice.reason;
+    sim::OrganParams params = sim::organ_params(organ);
+    params.body.lattice = choice.lattice;
     const sim::ModelOptions options = sim::model_options(scene, organ.name, w.dt_s);
-    if (organ.body.lattice > 0) {
+    if (choice.lattice > 0) {
       sim::ReducedBody reduced = sim::build_reduced_model(params, body.geometry, options);
       body.model = std::move(reduced.model);
       body.embedding = std::move(reduced.embedding);
@@ -75,6 +79,26 @@ World build_world(const scene::Scene& scene) {
     w.organs.push_back(std::move(body));
   }
   return w;
+}
+
+BodyChoice choose_body(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
+  if (organ.body.lattice != scene::Body::kLatticeAuto) {
+    return {organ.body.lattice, "as the scene sets (body.lattice: " + std::to_string(organ.body.lattice) + ")"};
+  }
+  const mesh::MeshReport& r = geometry.report;
+  std::vector<std::string> why;
+  if (!organ.mesh.file.empty()) {
+    if (!r.closed()) why.push_back("the surface is open");
+    if (r.components > 1) why.push_back("it is in " + std::to_string(r.components) + " pieces");
+    if (r.vertices > kAutoLatticeVertices) why.push_back("it has " + std::to_string(r.vertices) + " vertices");
+  }
+  if (why.empty()) {
+    return {0, "auto: full model, every vertex a particle (" +
+                   std::string(organ.mesh.file.empty() ? "a generated organ" : "a closed surface in one piece") + ")"};
+  }
+  std::string text = "auto: lattice " + std::to_string(kAutoLattice) + ", since ";
+  for (std::size_t i = 0; i < why.size(); ++i) text += (i == 0 ? "" : i + 1 == why.size() ? " and " : ", ") + why[i];
+  return {kAutoLattice, text + ": one volumetric body moves the parts together; body.lattice: 0 simulates every vertex"};
 }
 
 void render_positions(const OrganBody& body, Eigen::Matrix3Xd& out) { sim::embed(body.embedding, body.state.x, out); }

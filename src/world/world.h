@@ -21,7 +21,22 @@ struct OrganBody {
   sim::State state;
   sim::Embedding embedding;      ///< How the render mesh follows a reduced model; empty: full model.
   FoldWatch folds;               ///< Lasting crumpling of a driven region (checked every frame).
+  int lattice = 0;               ///< The body's lattice as built (0: full model).
+  std::string body_reason;       ///< Why this body (choose_body), for `validate`.
 };
+
+/// The body an organ gets: the scene's `body.lattice` when it gives a number; for `auto`,
+/// a lattice of kAutoLattice voxels for a mesh file that is open, in several pieces or over
+/// kAutoLatticeVertices vertices (an atlas organ of many overlapping open parts: one
+/// volumetric body moves them together and costs what its voxels cost, not its triangles),
+/// else the full model (every vertex a particle: accurate on a closed surface).
+struct BodyChoice {
+  int lattice = 0;
+  std::string reason;
+};
+inline constexpr int kAutoLattice = 12;
+inline constexpr int kAutoLatticeVertices = 50000;
+BodyChoice choose_body(const scene::Organ& organ, const mesh::OrganGeometry& geometry);
 
 /// The body's render-mesh positions now: the particles of a full model, or the mesh
 /// embedded in a reduced model's lattice. unit: m

@@ -16,6 +16,39 @@ namespace {
 
 scene::Scene heart() { return scene::load(test::source("scenes/heart.yaml"), {"output.duration=0.2 s"}); }
 
+TEST(ChooseBody, AutoGivesAnOpenOrManyPieceOrHugeMeshFileALatticeAndEverythingElseTheFullModel) {
+  scene::Organ organ;
+  mesh::OrganGeometry g;
+  g.report.triangles = 100, g.report.vertices = 60, g.report.components = 1;  // Closed, one piece.
+  EXPECT_EQ(choose_body(organ, g).lattice, 0) << "a generated organ";
+  organ.mesh.file = "organ.obj";
+  EXPECT_EQ(choose_body(organ, g).lattice, 0) << "a closed surface in one piece";
+  EXPECT_NE(choose_body(organ, g).reason.find("auto: full model"), std::string::npos);
+
+  g.report.boundary_edges = 4;
+  BodyChoice open = choose_body(organ, g);
+  EXPECT_EQ(open.lattice, kAutoLattice);
+  EXPECT_NE(open.reason.find("auto: lattice 12, since the surface is open:"), std::string::npos) << open.reason;
+  g.report.boundary_edges = 0, g.report.components = 17, g.report.vertices = 81379;
+  const BodyChoice atlas = choose_body(organ, g);
+  EXPECT_EQ(atlas.lattice, kAutoLattice);
+  EXPECT_NE(atlas.reason.find("since it is in 17 pieces and it has 81379 vertices"), std::string::npos) << atlas.reason;
+
+  organ.body.lattice = 0;  // The scene decides when it says.
+  EXPECT_EQ(choose_body(organ, g).lattice, 0);
+  EXPECT_EQ(choose_body(organ, g).reason, "as the scene sets (body.lattice: 0)");
+}
+
+TEST(ChooseBody, ValidateSaysWhichBodyAndWhy) {
+  const auto r = run(test::systole() + " validate " + test::source("scenes/own-mesh.yaml") + " -D organs.0.body.lattice=8");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("  body: as the scene sets (body.lattice: 8)"), std::string::npos) << r.output;
+  const auto a = run(test::systole() + " validate " + test::source("scenes/own-mesh.yaml"));
+  EXPECT_NE(a.output.find("  body: auto: full model, every vertex a particle (a closed surface in one piece)"),
+            std::string::npos)
+      << a.output;
+}
+
 TEST(World, EveryOrganGetsABodyAndAWholeNumberOfStepsMakesAFrame) {
   const auto s = heart();
   const World w = build_world(s);

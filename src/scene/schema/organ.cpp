@@ -9,6 +9,20 @@
 namespace systole::scene::schema {
 namespace {
 
+/// `body.lattice`: a whole number of voxels, or `auto`.
+ValueSpec<int> lattice_spec() {
+  ValueSpec<int> spec = whole<int>(0, 64);
+  spec.range = "0..64, or `auto`";
+  spec.read = [read_number = spec.read](const Node& node, int& out, const std::string& path, const Context& ctx) {
+    if (node.kind == Node::Kind::kScalar && node.scalar == "auto") {
+      out = Body::kLatticeAuto;
+      return;
+    }
+    read_number(node, out, path, ctx);
+  };
+  return spec;
+}
+
 ValueSpec<Selector> selector_map() {
   auto sphere = map<Selector>({
       field("center", vec3(Dimension::kLength), &Selector::center,
@@ -448,10 +462,14 @@ ValueSpec<Body> body_spec() {
             "Velocity damping towards rest (the surrounding tissue)."),
       field("bending", quantity(Dimension::kStiffness, closed(0, 1e9)), &Body::bending_N_per_m,
             "Stiffness of the springs across each edge, which resist folding; 0 = none."),
-      field("lattice", whole<int>(0, 64), &Body::lattice,
+      field("lattice", lattice_spec(), &Body::lattice,
             "Reduced model: voxels along the organ's longest side; their corners carry the motion and "
             "the mesh follows. Coarse: narrow regions lose much of their motion (docs/accuracy.md); "
-            "a lower mesh.detail is the accurate way to save time. 0 = full model, every vertex a particle."),
+            "a lower mesh.detail is the accurate way to save time. 0 = full model, every vertex a particle. "
+            "`auto`: 12 for a mesh file that is open, in several pieces or over 50,000 vertices (an atlas "
+            "organ of many parts: one volumetric body keeps them together), else 0; `validate` says which "
+            "and why.")
+          .shown_default("auto"),
       field("volume_drive", drive_spec(), &Body::volume_drive,
             "Drives the rest volume instead of rest lengths: V0(t) = V0 (1 + amplitude phi(t - delay)), "
             "`amplitude` the fraction of volume added (lungs inflating). Needs `volume_stiffness` > 0 "
