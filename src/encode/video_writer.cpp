@@ -243,6 +243,11 @@ void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
       av_dict_set(&options, "preset", settings.preset.c_str(), 0);
       av_dict_set(&options, "profile", lossless ? "high444" : "high", 0);
       av_dict_set_int(&options, "crf", settings.crf, 0);
+      // x264's lookahead runs in a thread of its own by default; how many frames it has
+      // analysed when the first frame is encoded then depends on timing, and so the bytes
+      // (seen: two encodes of the same frames differing on a loaded CI machine). In the
+      // caller's thread it sees the same frames every time.
+      av_dict_set(&options, "x264-params", "sync-lookahead=0", 0);
       break;
     }
   }
