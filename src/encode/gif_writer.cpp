@@ -141,6 +141,11 @@ void GifWriter::Impl::encode_all() {
   frame->width = settings.width;
   frame->height = settings.height;
   if (av_frame_get_buffer(frame, 0) < 0) fail(ExitCode::kInternal, "out of memory for a frame");
+  // Padding beyond the picture is never written; zeroed, the encoder sees the same bytes on
+  // every run (encode/video_writer.cpp found an encoder reading it).
+  for (AVBufferRef* buffer : frame->buf) {
+    if (buffer != nullptr) std::memset(buffer->data, 0, buffer->size);
+  }
 
   PaletteMapper mapper(histogram.build(256));
   const auto send = [&](const AVFrame* f) {

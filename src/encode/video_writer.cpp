@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string_view>
 
 #include "common/atomic_output.h"
@@ -243,11 +244,6 @@ void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
       av_dict_set(&options, "preset", settings.preset.c_str(), 0);
       av_dict_set(&options, "profile", lossless ? "high444" : "high", 0);
       av_dict_set_int(&options, "crf", settings.crf, 0);
-      // x264's lookahead runs in a thread of its own by default; how many frames it has
-      // analysed when the first frame is encoded then depends on timing, and so the bytes
-      // (seen: two encodes of the same frames differing on a loaded CI machine). In the
-      // caller's thread it sees the same frames every time.
-      av_dict_set(&options, "x264-params", "sync-lookahead=0", 0);
       break;
     }
   }
@@ -263,6 +259,12 @@ void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
   frame->color_trc = encoder->color_trc;
   frame->colorspace = encoder->colorspace;
   if (av_frame_get_buffer(frame, 0) < 0) fail(ExitCode::kInternal, "out of memory for a frame");
+  // The planes' padding beyond the picture is never written by the conversion, and the
+  // encoder reads some of it: left as malloc gave it, two encodes of the same frames
+  // differed (Formats.SameFramesGiveTheSameBytes, in one checkout and not another).
+  for (AVBufferRef* buffer : frame->buf) {
+    if (buffer != nullptr) std::memset(buffer->data, 0, buffer->size);
+  }
 
   stream = avformat_new_stream(format, nullptr);
   if (stream == nullptr) fail(ExitCode::kInternal, "cannot add a video stream");
