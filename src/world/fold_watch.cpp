@@ -24,7 +24,6 @@ double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 
 FoldWatch::FoldWatch(const scene::Organ& organ, const mesh::OrganGeometry& geometry) : organ_(organ.name) {
   const auto& surface = geometry.mesh.surface;
-  triangles_ = surface.triangles;
   // Regions worth watching: driven and free to move.
   std::vector<int> watched_index(organ.regions.size(), -1);
   for (std::size_t r = 0; r < organ.regions.size(); ++r) {
@@ -34,11 +33,20 @@ FoldWatch::FoldWatch(const scene::Organ& organ, const mesh::OrganGeometry& geome
     regions_.push_back({region.name, 1.0 / region.drive.rate_hz, {}, -1});
   }
   if (regions_.empty()) return;
-  // Pairs of triangles sharing an edge whose two ends are in the same watched region.
+  // Pairs of triangles sharing an edge whose two ends are in the same watched region; only
+  // the triangles of some pair are kept (`kept`: surface triangle -> index in triangles_).
   std::map<std::pair<int, int>, int> first_triangle_of_edge;
+  std::vector<int> kept(surface.triangles.size(), -1);
+  const auto keep = [&](int t) {
+    if (kept[static_cast<std::size_t>(t)] < 0) {
+      kept[static_cast<std::size_t>(t)] = static_cast<int>(triangles_.size());
+      triangles_.push_back(surface.triangles[static_cast<std::size_t>(t)]);
+    }
+    return kept[static_cast<std::size_t>(t)];
+  };
   const auto rest = [&](int v) { return surface.positions[static_cast<std::size_t>(v)]; };
-  for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) {
-    const Eigen::Vector3i& tri = triangles_[static_cast<std::size_t>(t)];
+  for (int t = 0; t < static_cast<int>(surface.triangles.size()); ++t) {
+    const Eigen::Vector3i& tri = surface.triangles[static_cast<std::size_t>(t)];
     for (int k = 0; k < 3; ++k) {
       const int a = tri[k], b = tri[(k + 1) % 3];
       const int region = geometry.vertex_region[static_cast<std::size_t>(a)];
@@ -48,25 +56,27 @@ FoldWatch::FoldWatch(const scene::Organ& organ, const mesh::OrganGeometry& geome
       const auto [it, inserted] = first_triangle_of_edge.emplace(std::minmax(a, b), t);
       if (inserted) continue;
       regions_[static_cast<std::size_t>(watched)].pairs.push_back(static_cast<int>(pairs_.size()));
-      pairs_.emplace_back(it->second, t);
-      rest_angle_.push_back(angle_between(normal_of(triangles_[static_cast<std::size_t>(it->second)], rest),
+      pairs_.emplace_back(keep(it->second), keep(t));
+      rest_angle_.push_back(angle_between(normal_of(surface.triangles[static_cast<std::size_t>(it->second)], rest),
                                           normal_of(tri, rest)));
     }
   }
   std::erase_if(regions_, [](const Region& r) { return r.pairs.empty(); });
   shares_.assign(regions_.size(), 0.0);
+  normals_.resize(triangles_.size());
 }
 
 std::optional<std::string> FoldWatch::update(const Eigen::Matrix3Xd& positions, double time_s) {
   if (regions_.empty()) return std::nullopt;
   const auto at = [&](int v) { return Eigen::Vector3d(positions.col(v)); };
+  // A triangle borders up to three pairs: its normal once.
+  for (std::size_t t = 0; t < triangles_.size(); ++t) normals_[t] = normal_of(triangles_[t], at);
   for (std::size_t r = 0; r < regions_.size(); ++r) {
     Region& region = regions_[r];
     int folded = 0;
     for (const int p : region.pairs) {
       const Eigen::Vector2i& pair = pairs_[static_cast<std::size_t>(p)];
-      const double angle = angle_between(normal_of(triangles_[static_cast<std::size_t>(pair[0])], at),
-                                         normal_of(triangles_[static_cast<std::size_t>(pair[1])], at));
+      const double angle = angle_between(normals_[static_cast<std::size_t>(pair[0])], normals_[static_cast<std::size_t>(pair[1])]);
       folded += angle - rest_angle_[static_cast<std::size_t>(p)] > kFoldAngle_rad;
     }
     shares_[r] = double(folded) / region.pairs.size();

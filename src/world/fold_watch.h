@@ -39,6 +39,9 @@ class FoldWatch {
   /// The share of each watched region's pairs folded at the last update. unit: 1
   const std::vector<double>& folded_shares() const { return shares_; }
 
+  /// Whether any region is watched (else update has nothing to look at).
+  bool watching() const { return !regions_.empty(); }
+
  private:
   struct Region {
     std::string name;
@@ -49,7 +52,8 @@ class FoldWatch {
   std::vector<Region> regions_;
   std::vector<Eigen::Vector2i> pairs_;     ///< Adjacent triangles (indices into triangles_).
   std::vector<double> rest_angle_;         ///< Per pair: the angle between their normals at rest. unit: rad
-  std::vector<Eigen::Vector3i> triangles_;
+  std::vector<Eigen::Vector3i> triangles_; ///< The triangles of some pair, each once.
+  std::vector<Eigen::Vector3d> normals_;   ///< Per triangle, at the last update (reused: no allocation a frame).
   std::vector<double> shares_;
   std::string organ_;
 };

@@ -113,8 +113,11 @@ void advance_to_frame(World& w, int frame) {
           << *problem << ". Remedy: " << sim::divergence_remedy(body.model) << ".";
         throw Error(ExitCode::kDiverged, m.str());
       }
-      render_positions(body, w.scratch_positions);
-      if (auto crumpled = body.folds.update(w.scratch_positions, body.state.time_s)) {
+      if (!body.folds.watching()) continue;
+      // A full model's particles are its render vertices; a lattice's are embedded first.
+      if (!body.embedding.empty()) render_positions(body, w.scratch_positions);
+      const Eigen::Matrix3Xd& surface = body.embedding.empty() ? body.state.x : w.scratch_positions;
+      if (auto crumpled = body.folds.update(surface, body.state.time_s)) {
         std::ostringstream m;
         m << "simulation stopped at frame " << w.frames_done + 1 << " (t = " << body.state.time_s << " s): " << *crumpled
           << ". Remedy: give the organ a volumetric body (body.lattice: 12) so its parts move as one, raise "

@@ -224,23 +224,6 @@ TEST(Import, PlyHeaderClaimingMoreThanTheFileHoldsIsDataError) {
   }
 }
 
-TEST(Import, OffHeaderClaimingMoreThanTheFileHoldsIsDataError) {
-  // fuzz_mesh: 4 vertices and 42 quadrillion faces in 79 bytes made assimp allocate 38 GB.
-  const auto file = testing::scratch("many_faces.off");
-  testing::write_text(file, "OFF\n4 4222222222222222 0\n0 0 1\n0 1 0\n1 0 0\n1 1 1\n3 0 1 2\n");
-  try {
-    import_mesh(file);
-    FAIL() << "expected an error";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ExitCode::kDataError);
-    EXPECT_NE(std::string(e.what()).find("the OFF header promises 4 vertices and 4.22222e+15 faces"), std::string::npos)
-        << e.what();
-  }
-  // The same file with its true count reads.
-  testing::write_text(file, "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
-  EXPECT_EQ(import_mesh(file).surface.triangles.size(), 4u);
-}
-
 /// import_mesh(file) refuses the file with `code` and a message containing `message`.
 void expect_refused(const std::filesystem::path& file, ExitCode code, const std::string& message) {
   try {
@@ -250,6 +233,16 @@ void expect_refused(const std::filesystem::path& file, ExitCode code, const std:
     EXPECT_EQ(e.code(), code) << e.what();
     EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
   }
+}
+
+TEST(Import, OffHeaderClaimingMoreThanTheFileHoldsIsDataError) {
+  // fuzz_mesh: 4 vertices and 42 quadrillion faces in 79 bytes made assimp allocate 38 GB.
+  const auto file = testing::scratch("many_faces.off");
+  testing::write_text(file, "OFF\n4 4222222222222222 0\n0 0 1\n0 1 0\n1 0 0\n1 1 1\n3 0 1 2\n");
+  expect_refused(file, ExitCode::kDataError, "the OFF header promises 4 vertices and 4.22222e+15 faces");
+  // The same file with its true count reads.
+  testing::write_text(file, "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  EXPECT_EQ(import_mesh(file).surface.triangles.size(), 4u);
 }
 
 TEST(Import, BinaryGltfHeaderClaimingMoreThanTheFileHoldsIsDataError) {
