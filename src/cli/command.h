@@ -23,6 +23,7 @@ Command add_compare_command(CLI::App& app);
 Command add_bake_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_tune_command(CLI::App& app);
+Command add_motion_command(CLI::App& app);
 
 /// Adds the repeatable `-D key.path=value` option every scene-reading command takes.
 void add_define_option(CLI::App& command, std::vector<std::string>& defines);

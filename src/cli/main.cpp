@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
       systole::cli::add_info_command(app),
       systole::cli::add_bench_command(app),
       systole::cli::add_tune_command(app),
+      systole::cli::add_motion_command(app),
   };
 
   try {

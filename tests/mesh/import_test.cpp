@@ -116,7 +116,9 @@ TEST(Import, PartsAreTheFilesNodesGroupsMeshesAndMaterialsAndSharedVerticesBelon
   const std::vector<char> valve_mask = mask("valve"), left_mask = mask("left");
   ASSERT_EQ(count_of(valve_mask), 3) << "a part lying on another keeps its vertices";
   for (std::size_t v = 0; v < valve_mask.size(); ++v) {
-    if (valve_mask[v]) EXPECT_TRUE(left_mask[v]) << "each shared vertex belongs to both parts";
+    if (valve_mask[v]) {
+      EXPECT_TRUE(left_mask[v]) << "each shared vertex belongs to both parts";
+    }
   }
 
   // As regions: the group, the valve on it, by the file's own names.

@@ -1,8 +1,9 @@
 // ctest-labels: slow-under-sanitizers
 // The shipped scenes (scenes/*.yaml) as a teacher uses them: each validates and renders;
 // the lungs breathe by the right amount, the heart's chambers contract in sequence, the
-// infarct barely moves while its neighbours do; and any real mesh in ../shared/meshes
-// goes through the bring-your-own-mesh path and beats without error.
+// infarct barely moves while its neighbours do; any real mesh in ../shared/meshes goes
+// through the bring-your-own-mesh path and beats without error; and the example meshes are
+// what their scripts write.
 
 #include <gtest/gtest.h>
 
@@ -38,7 +39,7 @@ TEST(Scenes, TheExpectedScenesShip) {
   for (const fs::path& p : shipped_scenes()) names.push_back(p.stem().string());
   for (const char* name : {"heart", "heart-tachycardia", "heart-afib", "heart-infarct", "heart-compare", "lungs",
                            "kidney", "liver", "own-mesh", "heart-slowmo-loop", "lungs-breath-gif",
-                           "heart-labels", "heart-afib-ecg"}) {
+                           "heart-labels", "heart-afib-ecg", "atlas-heart"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << "scenes/" << name << ".yaml";
   }
 }
@@ -289,6 +290,19 @@ TEST(Scenes, SharedMeshesBeatThroughTheOwnMeshPath) {
     }
   }
   if (count == 0) GTEST_SKIP() << "no mesh files in " << dir;
+}
+
+TEST(Scenes, TheExampleMeshesAreWhatTheirScriptsWrite) {
+  // Our own example files are made by scripts, not downloaded: a fresh copy is the same file.
+  if (run("command -v python3").exit_code != 0) GTEST_SKIP() << "python3 is not installed";
+  const fs::path out = scratch("example_meshes");
+  for (const auto& [script, file] : {std::pair{"scripts/make-atlas-example", "scenes/meshes/heart-parts.glb"},
+                                     std::pair{"scripts/make-own-mesh-example", "scenes/meshes/stomach.obj"}}) {
+    const fs::path fresh = out / fs::path(file).filename();
+    const RunResult r = run("python3 " + source(script) + " " + fresh.string());
+    ASSERT_EQ(r.exit_code, 0) << script << ":\n" << r.output;
+    EXPECT_EQ(read_file(fresh), read_file(source(file))) << script << " no longer writes " << file;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,40 @@
+#include <iostream>
+#include <memory>
+
+#include "cli/command.h"
+#include "common/error.h"
+#include "scene/load.h"
+#include "study/motion_check.h"
+
+namespace systole::cli {
+namespace {
+
+struct MotionArgs {
+  std::string scene;
+  std::vector<std::string> defines;
+  double duration_s = 0;
+  double band_mm = 1;
+};
+
+}  // namespace
+
+Command add_motion_command(CLI::App& app) {
+  auto o = std::make_shared<MotionArgs>();
+  auto* cmd = app.add_subcommand("motion", "Check the simulated motion: every driven region repeats its beat, and no "
+                                           "part of a multi-part mesh passes through another. Exit 1 if not.");
+  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
+  add_define_option(*cmd, o->defines);
+  cmd->add_option("--duration", o->duration_s, "Organ seconds to simulate (default: the scene's output.duration)")
+      ->check(CLI::Range(0.1, 600.0));
+  cmd->add_option("--band", o->band_mm, "How near another part a vertex is watched, in mm")
+      ->check(CLI::Range(0.1, 50.0))
+      ->capture_default_str();
+  return {cmd, [o] {
+            const auto scene = scene::load(o->scene, o->defines);
+            const study::MotionReport report = study::check_motion(scene, {o->duration_s, o->band_mm * 1e-3});
+            std::cout << study::motion_text(report);
+            return report.periodic() && report.parts_kept() ? 0 : static_cast<int>(ExitCode::kDiffers);
+          }};
+}
+
+}  // namespace systole::cli

@@ -1,0 +1,166 @@
+#include "study/motion_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "common/error.h"
+#include "study/driven_regions.h"
+#include "world/world.h"
+
+namespace systole::study {
+namespace {
+
+/// Samples per beat when beats are compared (the frames fall at other phases each beat).
+constexpr int kPhases = 48;
+
+/// The signal at time t_s, linear between frames sampled every frame_s from t0_s.
+double at_time(const std::vector<double>& signal, double t0_s, double frame_s, double t_s) {
+  const double u = (t_s - t0_s) / frame_s;
+  const int i = std::clamp(static_cast<int>(std::floor(u)), 0, static_cast<int>(signal.size()) - 2);
+  const double w = std::clamp(u - i, 0.0, 1.0);
+  return (1 - w) * signal[i] + w * signal[i + 1];
+}
+
+RegionBeats compare_beats(const DrivenRegion& region, const std::vector<double>& signal, double t0_s, double frame_s) {
+  RegionBeats out{region.name, 1 / region.rate_hz};
+  const double t_end = t0_s + frame_s * static_cast<double>(signal.size() - 1);
+  const int beats = static_cast<int>(std::floor((t_end - t0_s) / out.period_s + 1e-9));
+  std::vector<double> before;
+  for (int k = 1; k < beats; ++k) {
+    std::vector<double> beat(kPhases);
+    for (int m = 0; m < kPhases; ++m) beat[m] = at_time(signal, t0_s, frame_s, t0_s + (k + m / double(kPhases)) * out.period_s);
+    const auto [lo, hi] = std::minmax_element(beat.begin(), beat.end());
+    if (!before.empty()) {
+      const auto [blo, bhi] = std::minmax_element(before.begin(), before.end());
+      double sum = 0;
+      for (int m = 0; m < kPhases; ++m) sum += (beat[m] - before[m]) * (beat[m] - before[m]);
+      const double ptp = *bhi - *blo;
+      const double change = ptp > 0 ? 100 * std::sqrt(sum / kPhases) / ptp : HUGE_VAL;
+      if (change >= out.worst_change_pct) {
+        out.worst_change_pct = change;
+        out.worst_beat = k;
+      }
+    }
+    out.peak_to_peak_m = *hi - *lo;
+    before = std::move(beat);
+    ++out.beats;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool MotionReport::periodic() const {
+  return std::all_of(regions.begin(), regions.end(),
+                     [](const RegionBeats& r) { return r.worst_change_pct <= kBeatToBeatTolerancePct; });
+}
+
+bool MotionReport::parts_kept() const {
+  return std::all_of(organs.begin(), organs.end(),
+                     [](const OrganParts& o) { return o.worst.depth_m <= kCrossingTolerance_m; });
+}
+
+MotionReport check_motion(const scene::Scene& scene, const MotionOptions& options) {
+  world::World world = world::build_world(scene);
+  MotionReport report;
+  report.scene = scene.path;
+  report.duration_s = options.duration_s > 0 ? options.duration_s : scene.output.duration_s;
+  report.frames = static_cast<int>(std::lround(report.duration_s / world.frame_s));
+  report.band_m = options.band_m;
+
+  const std::vector<DrivenRegion> regions = driven_regions(scene, world);
+  std::vector<PartCrossingWatch> watches;
+  for (std::size_t o = 0; o < world.organs.size(); ++o) {
+    const auto& body = world.organs[o];
+    report.bodies.push_back(scene.organs[o].name + ": " +
+                            (body.lattice > 0 ? "lattice " + std::to_string(body.lattice) : std::string("full model")) +
+                            " (" + body.body_reason + ")");
+    watches.emplace_back(body.geometry.mesh, options.band_m);
+  }
+  const bool any_parts =
+      std::any_of(watches.begin(), watches.end(), [](const PartCrossingWatch& w) { return w.parts().size() >= 2; });
+  const double shortest_two_beats = [&] {
+    double s = HUGE_VAL;
+    for (const auto& r : regions) s = std::min(s, 3 / r.rate_hz);
+    return s;
+  }();
+  if (report.duration_s < shortest_two_beats && !any_parts) {
+    throw Error(ExitCode::kUsage, "motion: nothing to check in " + report.scene +
+                                      ": no periodically driven region has three beats in " +
+                                      std::to_string(report.duration_s) +
+                                      " s (the first is left out) and no organ has parts; give a longer --duration");
+  }
+
+  std::vector<std::vector<double>> signals(regions.size());
+  std::vector<Eigen::Matrix3Xd> positions(world.organs.size());
+  Eigen::Matrix3Xd stacked;
+  const double t0_s = world.organs.empty() ? 0 : world.organs[0].state.time_s;
+  for (int f = 0; f <= report.frames; ++f) {
+    if (f > 0) world::advance_to_frame(world, f);
+    Eigen::Index total = 0;
+    for (std::size_t o = 0; o < world.organs.size(); ++o) {
+      world::render_positions(world.organs[o], positions[o]);
+      total += positions[o].cols();
+      if (f > 0) watches[o].check(positions[o], f);
+    }
+    stacked.resize(3, total);
+    Eigen::Index at = 0;
+    for (const auto& p : positions) {
+      stacked.middleCols(at, p.cols()) = p;
+      at += p.cols();
+    }
+    for (std::size_t r = 0; r < regions.size(); ++r) signals[r].push_back(radial_excursion_m(regions[r], stacked));
+  }
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    RegionBeats beats = compare_beats(regions[r], signals[r], t0_s, world.frame_s);
+    if (beats.beats >= 2) report.regions.push_back(std::move(beats));
+  }
+  for (std::size_t o = 0; o < world.organs.size(); ++o) {
+    if (watches[o].parts().size() < 2) continue;
+    report.organs.push_back({scene.organs[o].name, watches[o].parts(), watches[o].pairs_compared(), watches[o].worst()});
+  }
+  return report;
+}
+
+std::string motion_text(const MotionReport& r) {
+  std::ostringstream out;
+  char line[512];
+  std::snprintf(line, sizeof line, "%s: %.3g s, %d frames\n", r.scene.c_str(), r.duration_s, r.frames);
+  out << line;
+  for (const auto& b : r.bodies) out << "  body " << b << "\n";
+  if (!r.regions.empty()) {
+    out << "  beats (radial excursion of each driven region; each beat against the one before, the first left out):\n";
+  }
+  for (const auto& g : r.regions) {
+    std::snprintf(line, sizeof line, "    %-32s %2d beats of %.3f s, %.3f mm peak to peak, worst change %.2f %% (beat %d)%s\n",
+                  g.name.c_str(), g.beats, g.period_s, g.peak_to_peak_m * 1e3, g.worst_change_pct, g.worst_beat,
+                  g.worst_change_pct <= kBeatToBeatTolerancePct ? "" : "  NOT PERIODIC");
+    out << line;
+  }
+  for (const auto& o : r.organs) {
+    std::snprintf(line, sizeof line, "  parts of %s (%zu; %zu vertex-part pairs came within the band):",
+                  o.organ.c_str(), o.parts.size(), o.pairs_compared);
+    out << line;
+    for (std::size_t i = 0; i < o.parts.size(); ++i) out << (i == 0 ? " " : ", ") << o.parts[i];
+    out << "\n";
+    if (o.worst.vertex < 0) {
+      out << "    no vertex passed through another part\n";
+    } else {
+      std::snprintf(line, sizeof line, "    deepest crossing %s%.3f mm: a vertex of %s through %s at frame %d%s\n",
+                    o.worst.depth_m >= 0.999 * r.band_m ? "at least " : "", o.worst.depth_m * 1e3, o.worst.from.c_str(), o.worst.into.c_str(), o.worst.frame,
+                    o.worst.depth_m <= kCrossingTolerance_m ? " (within the tolerance)" : "  PARTS PASS THROUGH");
+      out << line;
+    }
+  }
+  std::snprintf(line, sizeof line, "periodic (every beat within %.0f %% of the one before): %s\n", kBeatToBeatTolerancePct,
+                r.regions.empty() ? "no periodic region" : r.periodic() ? "yes" : "no");
+  out << line;
+  std::snprintf(line, sizeof line, "parts kept apart (no crossing beyond %.1f mm): %s\n", kCrossingTolerance_m * 1e3,
+                r.organs.empty() ? "no multi-part organ" : r.parts_kept() ? "yes" : "no");
+  out << line;
+  return out.str();
+}
+
+}  // namespace systole::study

@@ -1,0 +1,65 @@
+#pragma once
+// `systole motion`: is the organ's motion what a beating organ's is? It runs the scene and
+// checks two things a viewer would see go wrong with a mesh the body does not suit: every
+// periodically driven region repeats its beat (a body that slowly crumples or drifts does
+// not), and no part of a multi-part surface passes through another (study/part_crossing.h).
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "study/part_crossing.h"
+
+namespace systole::study {
+
+/// A beat may differ from the one before by this share of its peak-to-peak excursion. unit: %
+inline constexpr double kBeatToBeatTolerancePct = 2.0;
+/// A vertex may end up this far on the other side of a part it was beside at rest (a tenth
+/// of a millimetre: below what a frame shows of an organ). unit: m
+inline constexpr double kCrossingTolerance_m = 1e-4;
+
+struct MotionOptions {
+  double duration_s = 0;   ///< Organ time simulated; 0: the scene's output duration. unit: s
+  double band_m = 0.001;   ///< How near another part a vertex is compared (part_crossing.h). unit: m
+};
+
+/// One periodically driven region's beats, compared each with the one before; the first
+/// beat, out of the rest shape, is left out.
+struct RegionBeats {
+  std::string name;            ///< "heart.left_ventricle"
+  double period_s = 0;         ///< unit: s
+  int beats = 0;               ///< Whole beats compared (after the first).
+  double peak_to_peak_m = 0;   ///< Of its radial excursion in the last beat. unit: m
+  double worst_change_pct = 0; ///< RMS difference from the beat before, % of that beat's peak to peak. unit: %
+  int worst_beat = 0;          ///< Which beat (the first is 0) differed most from its predecessor.
+};
+
+struct OrganParts {
+  std::string organ;
+  std::vector<std::string> parts;  ///< The parts checked against each other.
+  std::size_t pairs_compared = 0;
+  PartCrossingWatch::Crossing worst;
+};
+
+struct MotionReport {
+  std::string scene;
+  double duration_s = 0;      ///< unit: s
+  int frames = 0;
+  double band_m = 0;          ///< Crossings are measured up to this depth (MotionOptions). unit: m
+  std::vector<std::string> bodies;  ///< Per organ: its body and why.
+  std::vector<RegionBeats> regions;
+  std::vector<OrganParts> organs;
+
+  bool periodic() const;      ///< Every region repeats its beat within the tolerance.
+  bool parts_kept() const;    ///< No part passed through another beyond the tolerance.
+};
+
+/// Runs the scene for the duration, frame by frame. Throws Error(kDiverged) when the body
+/// blows up or crumples (world::advance_to_frame), Error(kUsage) when it is too short to
+/// compare two beats of any region and has no parts to check.
+MotionReport check_motion(const scene::Scene& scene, const MotionOptions& options);
+
+/// The report as `systole motion` prints it.
+std::string motion_text(const MotionReport& report);
+
+}  // namespace systole::study
