@@ -405,13 +405,11 @@ bool receive_result(int fd, JobResult& r) {
 
 int rasterizer_threads(std::size_t job_count, const BatchOptions& options) {
   const bool in_children = !(job_count == 1 && !options.several);
-  if (in_children && options.parallel > 1) {
-    // Several renders share the cores: llvmpipe's threads per context default to all
-    // cores, which oversubscribes them.
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    return static_cast<int>(std::max(1u, cores / static_cast<unsigned>(options.parallel)));
-  }
-  return clip::kRasterizerThreads;
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  // Several renders share the cores: llvmpipe's threads per context default to all cores,
+  // which would oversubscribe them.
+  const unsigned sharing = in_children && options.parallel > 1 ? static_cast<unsigned>(options.parallel) : 1u;
+  return static_cast<int>(std::max(1u, cores / sharing));
 }
 
 std::vector<JobResult> run_jobs(const std::vector<Job>& jobs, const BatchOptions& options,

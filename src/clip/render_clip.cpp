@@ -12,6 +12,7 @@
 #include "clip/bake.h"
 #include "clip/camera_framing.h"
 #include "clip/camera_motion.h"
+#include "clip/render_detail.h"
 #include "clip/frame_list.h"
 #include "clip/frame_pipeline.h"
 #include "clip/overlay_plan.h"
@@ -122,6 +123,7 @@ std::vector<int> selected_frames(const RenderRequest& request, int frame_count) 
 struct ClipSurfaces {
   std::vector<std::vector<SurfaceBuffers>> slots;  ///< slots[k][o]: organ o of the frame in slot k.
   std::vector<int> ids;                            ///< The renderer's surface id of each organ.
+  std::vector<std::vector<Eigen::Vector3i>> drawn; ///< The triangles drawn of each organ (clip/render_detail.h).
   std::vector<std::optional<DynamicColors>> dynamic;
 };
 
@@ -133,13 +135,15 @@ ClipSurfaces add_surfaces(render::Renderer& renderer, const scene::Scene& scene,
     const auto& body = world.organs[o];
     const auto& organ = scene.organs[o];
     const auto& surface = body.geometry.mesh.surface;
-    s.ids.push_back(renderer.add_surface(surface.triangles,
+    RenderDetail detail = render_detail(scene, world, o);
+    s.ids.push_back(renderer.add_surface(detail.triangles,
                                          render::static_vertex_colors(organ, body.geometry.vertex_region),
                                          organ.material, vertex_opacity(organ, body.geometry.vertex_region)));
     if (organ.clip.enabled) renderer.set_clip(s.ids.back(), organ.clip);
     // An open surface (an atlas part, a sheet) would show nothing through its holes or
     // from behind with its back faces culled.
-    renderer.set_two_sided(s.ids.back(), !body.geometry.report.closed());
+    renderer.set_two_sided(s.ids.back(), body.geometry.report.closed() ? -1 : detail.two_sided_from);
+    s.drawn.push_back(std::move(detail.triangles));
     if (const render::OrganColorMap map = render::organ_color_map(organ); map.has) {
       s.dynamic[o].emplace();
       s.dynamic[o]->map = map.map;
@@ -298,7 +302,9 @@ class ClipFrames {
     const Eigen::Index n = buf.mesh_positions.cols();
     const double* x = buf.mesh_positions.data();
     for (Eigen::Index k = 0; k < 3 * n; ++k) buf.positions[k] = static_cast<float>(x[k]);
-    mesh::vertex_normals(x, static_cast<int>(n), world_.organs[o].geometry.mesh.surface.triangles, buf.normals.data());
+    // The drawn triangles' normals: a simplified mesh is shaded as it is drawn (and a
+    // vertex no drawn triangle uses is never seen).
+    mesh::vertex_normals(x, static_cast<int>(n), surfaces_.drawn[o], buf.normals.data());
     if (surfaces_.dynamic[o]) map_colors(*surfaces_.dynamic[o], world_.organs[o], scene_.organs[o], f / out_.fps, buf);
     frame_positions_[o] = &buf.mesh_positions;
   }

@@ -14,13 +14,6 @@
 
 namespace systole::clip {
 
-/// llvmpipe's rasterizer threads for a render, for the two-core machines we target
-/// (docs/performance.md): it rasterizes on one thread of its own while the simulation and the
-/// encoder run beside it; more threads only contend for the same two cores. llvmpipe reads
-/// LP_NUM_THREADS when the process creates its first context: the command line sets it
-/// (rasterizer_threads in batch/batch.h), a library never touches the environment.
-inline constexpr int kRasterizerThreads = 1;
-
 struct RenderRequest {
   std::filesystem::path video;    ///< Video to write (format: video_format()); empty: no video.
   std::filesystem::path png_dir;  ///< Folder for numbered PNG frames; empty: none.

@@ -8,7 +8,7 @@ namespace systole::clip {
 namespace {
 
 /// Encoder threads, for the two-core machines we target (docs/performance.md): x264 on one
-/// thread beside the simulation and the rasterizer (clip/render_clip.h: kRasterizerThreads).
+/// thread beside the simulation and the rasterizer (batch/batch.h: rasterizer_threads).
 constexpr int kEncoderThreads = 1;
 
 encode::VideoFormat encode_format(scene::Format f) {

@@ -40,7 +40,7 @@ struct Surface {
   float min_opacity = 1;  ///< Below kOpaqueFrom: a part goes through the transparent pass.
   float max_opacity = 1;  ///< From kOpaqueFrom: a part goes through the opaque pass.
   scene::ClipPlane clip;  ///< The surface's own cut (set_clip).
-  bool two_sided = false; ///< Back faces drawn (set_two_sided).
+  int two_sided_from = -1; ///< Back faces drawn from this triangle on (set_two_sided); -1: none.
   bool uploaded = false;         ///< update_surface has given it positions.
   Eigen::Vector3d box_min = Eigen::Vector3d::Zero();  ///< Bounds of the last upload. unit: m
   Eigen::Vector3d box_max = Eigen::Vector3d::Zero();
@@ -282,12 +282,12 @@ void Renderer::update_colors(int id, const float* colors_rgb) {
   glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(s.vertex_count * 3 * sizeof(float)), colors_rgb);
 }
 
-void Renderer::set_two_sided(int id, bool two_sided) {
+void Renderer::set_two_sided(int id, int from_triangle) {
   Impl& r = *impl_;
   if (id < 0 || static_cast<std::size_t>(id) >= r.surfaces.size()) {
     fail("set_two_sided: unknown surface id " + std::to_string(id));
   }
-  r.surfaces[static_cast<std::size_t>(id)].two_sided = two_sided;
+  r.surfaces[static_cast<std::size_t>(id)].two_sided_from = from_triangle;
 }
 
 void Renderer::set_clip(int id, const scene::ClipPlane& clip) {
@@ -402,12 +402,26 @@ void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene:
         glUniform3fv(program.loc.cut_color, 1, cut.data());
         glEnable(GL_CLIP_DISTANCE0);
       }
-      // Through a cut the inside shows as the cut face; an open surface shows its back.
-      if (clip.enabled || s.two_sided) glDisable(GL_CULL_FACE);
+      // Through a cut the inside shows as the cut face; an open surface shows its back:
+      // the triangles from two_sided_from on are drawn without culling.
+      GLsizei culled = s.index_count;  // The indices drawn with back faces culled.
+      if (clip.enabled) {
+        culled = 0;
+      } else if (s.two_sided_from >= 0) {
+        culled = std::min<GLsizei>(3 * s.two_sided_from, s.index_count);
+      }
+      const auto draw_triangles = [&] {
+        if (culled > 0) glDrawElements(GL_TRIANGLES, culled, GL_UNSIGNED_INT, nullptr);
+        if (culled < s.index_count) {
+          glDisable(GL_CULL_FACE);
+          glDrawElements(GL_TRIANGLES, s.index_count - culled, GL_UNSIGNED_INT,
+                         reinterpret_cast<const void*>(static_cast<std::uintptr_t>(culled) * sizeof(std::uint32_t)));
+          glEnable(GL_CULL_FACE);
+        }
+      };
       glBindVertexArray(s.vao);
-      glDrawElements(GL_TRIANGLES, s.index_count, GL_UNSIGNED_INT, nullptr);
+      draw_triangles();
       if (clip.enabled) glDisable(GL_CLIP_DISTANCE0);
-      if (clip.enabled || s.two_sided) glEnable(GL_CULL_FACE);
     };
     if (p.source->surfaces.empty()) {
       for (const Surface& s : r.surfaces) draw_one(s);

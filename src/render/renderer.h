@@ -67,10 +67,11 @@ class Renderer {
   /// surface is drawn without back-face culling, its back faces flat in clip.cut_color.
   void set_clip(int id, const scene::ClipPlane& clip);
 
-  /// Draws a surface's back faces too, shaded as the front with the normal turned towards
-  /// the eye: an open surface (an atlas part, a sheet) shows its inside through its holes
-  /// and from behind, instead of nothing. Closed surfaces keep back-face culling.
-  void set_two_sided(int id, bool two_sided);
+  /// Draws the back faces of a surface's triangles from `from_triangle` on (0: all; -1, the
+  /// default: none), shaded as the front with the normal turned towards the eye: an open
+  /// surface (an atlas part, a sheet) shows its inside through its holes and from behind,
+  /// instead of nothing. Closed pieces, listed first, keep back-face culling.
+  void set_two_sided(int id, int from_triangle);
 
   /// Uploads a surface's current vertex positions (unit: m, world space) and unit normals,
   /// 3 floats per vertex, vertex count as given to add_surface. No GL allocation.

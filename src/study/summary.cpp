@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "clip/render_detail.h"
 #include "clip/video_format.h"
 #include "mesh/inspect.h"
 #include "sim/solvers/step_size.h"
@@ -145,6 +146,20 @@ std::string summarize(const scene::Scene& scene, const world::World& world) {
   s << "camera: " << (camera.automatic ? "frames the organs (no position given): " : "") << "at ("
     << camera.position_m.x() << ", " << camera.position_m.y() << ", " << camera.position_m.z() << ") m looking at ("
     << camera.target_m.x() << ", " << camera.target_m.y() << ", " << camera.target_m.z() << ") m\n";
+  for (std::size_t o = 0; o < world.organs.size(); ++o) {
+    const clip::RenderDetail detail = clip::render_detail(scene, world, o);
+    if (detail.full_triangles <= clip::kSimplifyFromTriangles) continue;
+    s << "drawn: " << scene.organs[o].name << ": ";
+    if (detail.pixel_m > 0) {
+      s << detail.triangles.size() << " of " << detail.full_triangles
+        << " triangles, simplified within a pixel (a pixel is " << detail.pixel_m * 1e3
+        << " mm on the organ at the nearest camera; the removed vertices lie within " << detail.error_m * 1e3
+        << " mm of the drawn surface); " << detail.triangles.size() - detail.two_sided_from
+        << " of them in open pieces, drawn two-sided\n";
+    } else {
+      s << "all " << detail.full_triangles << " triangles (a camera comes inside the organ's bounding sphere)\n";
+    }
+  }
   summarize_output(s, scene);
   summarize_overlay(s, scene.overlay);
   return s.str();

@@ -57,17 +57,26 @@ FoldWatch::FoldWatch(const scene::Organ& organ, const mesh::OrganGeometry& geome
       if (inserted) continue;
       regions_[static_cast<std::size_t>(watched)].pairs.push_back(static_cast<int>(pairs_.size()));
       pairs_.emplace_back(keep(it->second), keep(t));
-      rest_angle_.push_back(angle_between(normal_of(surface.triangles[static_cast<std::size_t>(it->second)], rest),
-                                          normal_of(tri, rest)));
+      // Folded: turned more than kFoldAngle past the rest angle, that is (cos falling on
+      // [0, pi]) a cosine below the rest angle's plus kFoldAngle (never, past pi): no acos a frame.
+      const double limit = angle_between(normal_of(surface.triangles[static_cast<std::size_t>(it->second)], rest),
+                                         normal_of(tri, rest)) +
+                           kFoldAngle_rad;
+      folded_below_cos_.push_back(limit < M_PI ? std::cos(limit) : -2.0);
     }
   }
   std::erase_if(regions_, [](const Region& r) { return r.pairs.empty(); });
   shares_.assign(regions_.size(), 0.0);
   normals_.resize(triangles_.size());
+  double fastest_s = regions_.empty() ? 0 : regions_.front().period_s;
+  for (const Region& r : regions_) fastest_s = std::min(fastest_s, r.period_s);
+  look_every_s_ = fastest_s / kLooksPerCycle;
 }
 
 std::optional<std::string> FoldWatch::update(const Eigen::Matrix3Xd& positions, double time_s) {
   if (regions_.empty()) return std::nullopt;
+  // A little early rather than a frame late when the frames do not divide the period.
+  next_look_s_ = time_s + 0.99 * look_every_s_;
   const auto at = [&](int v) { return Eigen::Vector3d(positions.col(v)); };
   // A triangle borders up to three pairs: its normal once.
   for (std::size_t t = 0; t < triangles_.size(); ++t) normals_[t] = normal_of(triangles_[t], at);
@@ -76,8 +85,8 @@ std::optional<std::string> FoldWatch::update(const Eigen::Matrix3Xd& positions, 
     int folded = 0;
     for (const int p : region.pairs) {
       const Eigen::Vector2i& pair = pairs_[static_cast<std::size_t>(p)];
-      const double angle = angle_between(normals_[static_cast<std::size_t>(pair[0])], normals_[static_cast<std::size_t>(pair[1])]);
-      folded += angle - rest_angle_[static_cast<std::size_t>(p)] > kFoldAngle_rad;
+      const double cos_angle = normals_[static_cast<std::size_t>(pair[0])].dot(normals_[static_cast<std::size_t>(pair[1])]);
+      folded += cos_angle < folded_below_cos_[static_cast<std::size_t>(p)];
     }
     shares_[r] = double(folded) / region.pairs.size();
     if (shares_[r] <= kFoldedShare) {

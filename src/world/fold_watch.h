@@ -24,6 +24,7 @@ namespace systole::world {
 
 inline constexpr double kFoldAngle_rad = 1.0471975511965976;  ///< 60 deg. unit: rad
 inline constexpr double kFoldedShare = 0.05;                  ///< unit: 1
+inline constexpr int kLooksPerCycle = 8;
 
 class FoldWatch {
  public:
@@ -39,8 +40,10 @@ class FoldWatch {
   /// The share of each watched region's pairs folded at the last update. unit: 1
   const std::vector<double>& folded_shares() const { return shares_; }
 
-  /// Whether any region is watched (else update has nothing to look at).
-  bool watching() const { return !regions_.empty(); }
+  /// Whether a look is due at `time_s`: kLooksPerCycle times a cycle of the fastest watched
+  /// drive is enough to see a fold that lasts a cycle, and a frame of a big mesh is spared
+  /// the rest (never, when no region is watched).
+  bool due(double time_s) const { return !regions_.empty() && time_s >= next_look_s_; }
 
  private:
   struct Region {
@@ -51,11 +54,13 @@ class FoldWatch {
   };
   std::vector<Region> regions_;
   std::vector<Eigen::Vector2i> pairs_;     ///< Adjacent triangles (indices into triangles_).
-  std::vector<double> rest_angle_;         ///< Per pair: the angle between their normals at rest. unit: rad
+  std::vector<double> folded_below_cos_;   ///< Per pair: folded while the cosine between their normals is below this. unit: 1
   std::vector<Eigen::Vector3i> triangles_; ///< The triangles of some pair, each once.
   std::vector<Eigen::Vector3d> normals_;   ///< Per triangle, at the last update (reused: no allocation a frame).
   std::vector<double> shares_;
   std::string organ_;
+  double look_every_s_ = 0;  ///< The fastest watched drive's period / kLooksPerCycle. unit: s
+  double next_look_s_ = 0;   ///< When update is next due. unit: s
 };
 
 }  // namespace systole::world

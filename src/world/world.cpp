@@ -113,7 +113,7 @@ void advance_to_frame(World& w, int frame) {
           << *problem << ". Remedy: " << sim::divergence_remedy(body.model) << ".";
         throw Error(ExitCode::kDiverged, m.str());
       }
-      if (!body.folds.watching()) continue;
+      if (!body.folds.due(body.state.time_s)) continue;
       // A full model's particles are its render vertices; a lattice's are embedded first.
       if (!body.embedding.empty()) render_positions(body, w.scratch_positions);
       const Eigen::Matrix3Xd& surface = body.embedding.empty() ? body.state.x : w.scratch_positions;

@@ -188,7 +188,7 @@ TEST(Renderer, ATwoSidedSurfaceSeenFromBehindIsLitAsTheSideTheEyeSees) {
   Renderer renderer(kWidth, kHeight, 0);
   const Shape tri = triangle(0.5f, 0);
   const int id = add(renderer, tri, colors(tri, kOrgan));
-  renderer.set_two_sided(id, true);
+  renderer.set_two_sided(id, 0);
   const Image front = render(renderer, camera_at(2));
   scene::Light from_behind;
   from_behind.direction = Eigen::Vector3d(0, 0, 1);  // Travels towards +z: lights the back.
