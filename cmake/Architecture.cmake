@@ -32,7 +32,8 @@ set(SYSTOLE_EXTERNAL
   "PkgConfig::LIBAV:encode"
   "Freetype::Freetype:plot"
   "yaml-cpp:scene"
-  "assimp::assimp:mesh")
+  "assimp::assimp:mesh"
+  "meshoptimizer::meshoptimizer:mesh")
 
 # allowed = the modules `module` may use (empty list for common); known = FALSE if not listed.
 function(systole_allowed_modules module out_allowed out_known)
