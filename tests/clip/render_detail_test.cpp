@@ -12,6 +12,7 @@
 #include "mesh/icosphere.h"
 #include "scene/load.h"
 #include "support/run.h"
+#include "support/shapes.h"
 
 namespace systole::test {
 namespace {
@@ -19,22 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 using mesh::testing::GltfPart;
 using mesh::testing::write_parts_gltf;
-
-/// A 6 cm square sheet of 2 x n x n triangles in the plane z = `z`.
-mesh::TriangleMesh sheet(int n, double z) {
-  mesh::TriangleMesh m;
-  for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= n; ++i) m.positions.emplace_back(0.06 * i / n - 0.03, 0.06 * j / n - 0.03, z);
-  }
-  const auto at = [&](int i, int j) { return j * (n + 1) + i; };
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      m.triangles.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      m.triangles.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  }
-  return m;
-}
 
 /// The one organ of a scene on `file` with `extra` scene lines, and what is drawn of it.
 struct Drawn {
@@ -52,7 +37,7 @@ Drawn drawn(const fs::path& file, const std::string& extra) {
 TEST(RenderDetail, ClosedPiecesComeFirstAndOpenOnesAreTwoSided) {
   const fs::path dir = scratch("render_detail_pieces");
   const mesh::TriangleMesh ball = mesh::icosphere(0.02, 2);  // 320 triangles, closed.
-  write_parts_gltf(dir / "parts.gltf", {}, {GltfPart{"sheet", "sheet", "m", {sheet(4, -0.03)}},
+  write_parts_gltf(dir / "parts.gltf", {}, {GltfPart{"sheet", "sheet", "m", {sheet(4, 0.06, Eigen::Vector3d(-0.03, -0.03, -0.03))}},
                                            GltfPart{"ball", "ball", "m", {ball}}});
   const auto [positions, d] = drawn(dir / "parts.gltf", "output: {width: 320, height: 240}\n");
   EXPECT_EQ(d.full_triangles, 320u + 32u);

@@ -10,25 +10,10 @@
 #include <set>
 
 #include "mesh/icosphere.h"
+#include "support/shapes.h"
 
 namespace systole::mesh {
 namespace {
-
-/// An n x n grid of squares in the z = 0 plane, side `size`, two triangles a square.
-TriangleMesh sheet(int n, double size) {
-  TriangleMesh m;
-  for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= n; ++i) m.positions.emplace_back(size * i / n, size * j / n, 0);
-  }
-  const auto at = [&](int i, int j) { return j * (n + 1) + i; };
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      m.triangles.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      m.triangles.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  }
-  return m;
-}
 
 TEST(Simplify, ASphereStaysNearItselfOverItsOwnVertices) {
   const double radius = 0.05, error = 0.0002;
@@ -53,7 +38,7 @@ TEST(Simplify, ASphereStaysNearItselfOverItsOwnVertices) {
 }
 
 TEST(Simplify, AFlatSheetCollapsesButKeepsItsBorder) {
-  const TriangleMesh m = sheet(40, 0.1);  // 3200 triangles, all in one plane.
+  const TriangleMesh m = test::sheet(40, 0.1);  // 3200 triangles, all in one plane.
   const SimplifiedTriangles s = simplify(m, 1e-4);
   EXPECT_LT(s.triangles.size(), m.triangles.size() / 4);
   std::set<int> used;

@@ -8,26 +8,21 @@
 
 #include <set>
 
+#include "support/shapes.h"
+
 namespace systole::study {
 namespace {
 
-/// Adds an n x n grid of squares (two triangles each, facing +z) of side `size` centred
-/// at `centre` to `mesh` as part `part`.
+/// Adds an n x n sheet (support/shapes.h) of side `size` centred at `centre` to `mesh` as
+/// part `part`.
 void add_sheet(mesh::OrganMesh& mesh, int part, const Eigen::Vector3d& centre, double size, int n) {
+  const mesh::TriangleMesh s = test::sheet(n, size, centre - Eigen::Vector3d(size / 2, size / 2, 0));
   const int first = static_cast<int>(mesh.surface.positions.size());
-  for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= n; ++i) {
-      mesh.surface.positions.push_back(centre + size * Eigen::Vector3d(i / double(n) - 0.5, j / double(n) - 0.5, 0));
-      mesh.vertex_part.push_back(part);
-    }
+  for (const auto& p : s.positions) {
+    mesh.surface.positions.push_back(p);
+    mesh.vertex_part.push_back(part);
   }
-  const auto at = [&](int i, int j) { return first + j * (n + 1) + i; };
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      mesh.surface.triangles.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      mesh.surface.triangles.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  }
+  for (const auto& t : s.triangles) mesh.surface.triangles.push_back(t + Eigen::Vector3i::Constant(first));
 }
 
 /// A 2 cm sheet (part "wall") and a 5 mm patch (part "valve") 1 mm above its centre, with
