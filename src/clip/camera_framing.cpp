@@ -21,22 +21,6 @@ std::vector<std::size_t> shown_organs(const scene::Scene& scene, const std::vect
   return shown;
 }
 
-/// The rest surfaces' bounding box centre, and the radius about it that holds them all.
-render::BoundingSphere bounding_sphere(const world::World& world, const std::vector<std::size_t>& organs) {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-  for (const std::size_t o : organs) {
-    for (const Eigen::Vector3d& p : world.organs[o].geometry.mesh.surface.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  }
-  render::BoundingSphere sphere;
-  if (lo.x() > hi.x()) return sphere;
-  sphere.center = 0.5 * (lo + hi);
-  for (const std::size_t o : organs) {
-    for (const Eigen::Vector3d& p : world.organs[o].geometry.mesh.surface.positions) {
-      sphere.radius = std::max(sphere.radius, (p - sphere.center).norm());
-    }
-  }
-  return sphere;
-}
 
 void place(scene::Camera& camera, const render::BoundingSphere& sphere, double aspect) {
   if (!camera.automatic) return;
@@ -92,6 +76,22 @@ std::string why_not_seen(const world::OrganBody& body, const Eigen::Vector3d& ce
 }
 
 }  // namespace
+
+render::BoundingSphere bounding_sphere(const world::World& world, const std::vector<std::size_t>& organs) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+  for (const std::size_t o : organs) {
+    for (const Eigen::Vector3d& p : world.organs[o].geometry.mesh.surface.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  }
+  render::BoundingSphere sphere;
+  if (lo.x() > hi.x()) return sphere;
+  sphere.center = 0.5 * (lo + hi);
+  for (const std::size_t o : organs) {
+    for (const Eigen::Vector3d& p : world.organs[o].geometry.mesh.surface.positions) {
+      sphere.radius = std::max(sphere.radius, (p - sphere.center).norm());
+    }
+  }
+  return sphere;
+}
 
 scene::Scene with_cameras_placed(scene::Scene scene, const world::World& world) {
   const double aspect = double(scene.output.width) / scene.output.height;

@@ -5,10 +5,15 @@
 
 #include <vector>
 
+#include "render/camera_matrices.h"
 #include "scene/scene.h"
 #include "world/world.h"
 
 namespace systole::clip {
+
+/// The organs' rest surfaces: their bounding box's centre, and the radius about it that
+/// holds them all.
+render::BoundingSphere bounding_sphere(const world::World& world, const std::vector<std::size_t>& organs);
 
 /// `scene` with every automatic camera (scene::Camera::automatic: the scene's and each
 /// view's) placed: looking along -z at the centre of the bounding sphere of the organs it

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
 
+#include "clip/camera_framing.h"
 #include "clip/camera_motion.h"
 #include "mesh/simplify.h"
 
@@ -39,62 +39,11 @@ double smallest_pixel_m(const scene::Scene& scene, const std::string& organ, con
   return std::isfinite(smallest) ? smallest : 0;
 }
 
-/// Per vertex: whether its connected piece of `surface` is closed (every edge shared by
-/// exactly two triangles that run it in opposite directions) and faces outwards (positive
-/// volume).
-std::vector<char> in_closed_piece(const mesh::TriangleMesh& surface) {
-  const int n = static_cast<int>(surface.positions.size());
-  std::vector<int> parent(n);
-  for (int v = 0; v < n; ++v) parent[v] = v;
-  const auto root = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  struct Edge {
-    int lo, hi;
-    bool forward;
-  };
-  std::vector<Edge> edges;
-  edges.reserve(3 * surface.triangles.size());
-  for (const auto& t : surface.triangles) {
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      edges.push_back({std::min(a, b), std::max(a, b), a < b});
-      parent[root(a)] = root(b);
-    }
-  }
-  std::vector<char> closed(n, 1);
-  std::vector<double> volume(n, 0);
-  for (const auto& t : surface.triangles) {
-    const auto& p = surface.positions;
-    volume[root(t[0])] += p[t[0]].dot(p[t[1]].cross(p[t[2]])) / 6;
-  }
-  std::sort(edges.begin(), edges.end(),
-            [](const Edge& a, const Edge& b) { return std::tie(a.lo, a.hi, a.forward) < std::tie(b.lo, b.hi, b.forward); });
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i;
-    while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
-    // Exactly one use each way round: [backward, forward] after the sort.
-    if (j - i != 2 || edges[i].forward || !edges[i + 1].forward) closed[root(edges[i].lo)] = 0;
-    i = j;
-  }
-  std::vector<char> out(n);
-  for (int v = 0; v < n; ++v) out[v] = closed[root(v)] && volume[root(v)] > 0;
-  return out;
-}
-
-
 /// Simplifies a big mesh within a pixel, the smallest the clip makes of it.
 void simplify(const scene::Scene& scene, const world::World& world, std::size_t organ, RenderDetail& detail) {
   const mesh::TriangleMesh& surface = world.organs[organ].geometry.mesh.surface;
-  Eigen::Vector3d lo = surface.positions.front(), hi = lo;
-  for (const auto& p : surface.positions) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  const Eigen::Vector3d centre = 0.5 * (lo + hi);
-  const double radius = 0.5 * (hi - lo).norm();
-  detail.pixel_m = smallest_pixel_m(scene, scene.organs[organ].name, centre, radius);
+  const render::BoundingSphere sphere = bounding_sphere(world, {organ});
+  detail.pixel_m = smallest_pixel_m(scene, scene.organs[organ].name, sphere.center, sphere.radius);
   if (detail.pixel_m <= 0) return;
   mesh::SimplifiedTriangles simplified = mesh::simplify(surface, kSimplifyError_px * detail.pixel_m);
   detail.triangles = std::move(simplified.triangles);
@@ -109,9 +58,11 @@ RenderDetail render_detail(const scene::Scene& scene, const world::World& world,
   detail.full_triangles = surface.triangles.size();
   detail.triangles = surface.triangles;
   if (surface.triangles.size() > kSimplifyFromTriangles && !surface.positions.empty()) simplify(scene, world, organ, detail);
-  const std::vector<char> closed = in_closed_piece(surface);
+  const std::vector<char>& closed = world.organs[organ].geometry.report.in_closed_piece;
   const auto open_from = std::stable_partition(detail.triangles.begin(), detail.triangles.end(),
-                                               [&](const Eigen::Vector3i& t) { return closed[t[0]] != 0; });
+                                               [&](const Eigen::Vector3i& t) {
+                                                 return static_cast<std::size_t>(t[0]) < closed.size() && closed[t[0]];
+                                               });
   detail.two_sided_from = static_cast<int>(open_from - detail.triangles.begin());
   return detail;
 }

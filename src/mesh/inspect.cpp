@@ -92,10 +92,12 @@ MeshReport inspect(const TriangleMesh& mesh) {
     return std::tie(x.lo, x.hi, x.triangle, x.forward) < std::tie(y.lo, y.hi, y.triangle, y.forward);
   });
   std::array<int, 2> first_boundary{-1, -1}, first_nonmanifold{-1, -1}, first_inconsistent{-1, -1};
+  std::vector<int> open_at;  // A vertex of every edge that is not closed and consistent.
   for (size_t i = 0; i < uses.size();) {
     size_t j = i;
     while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
     const size_t count = j - i;
+    if (count != 2 || uses[i].forward == uses[i + 1].forward) open_at.push_back(uses[i].lo);
     if (count == 1) {
       if (report.boundary_edges++ == 0) first_boundary = {uses[i].lo, uses[i].hi};
     } else if (count >= 3) {
@@ -139,6 +141,7 @@ MeshReport inspect(const TriangleMesh& mesh) {
                                      ? Eigen::Vector3d(0.5 * (lo + hi))
                                      : Eigen::Vector3d::Zero();
   double six_volume = 0;
+  std::vector<double> piece_six_volume(static_cast<size_t>(n), 0.0);  // At each piece's root.
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     if (!valid[t]) continue;
     const Eigen::Vector3i& tri = mesh.triangles[t];
@@ -146,8 +149,16 @@ MeshReport inspect(const TriangleMesh& mesh) {
     const Eigen::Vector3d b = mesh.positions[static_cast<size_t>(tri[1])] - centre;
     const Eigen::Vector3d c = mesh.positions[static_cast<size_t>(tri[2])] - centre;
     six_volume += a.dot(b.cross(c));
+    piece_six_volume[static_cast<size_t>(find_root(parent, tri[0]))] += a.dot(b.cross(c));
   }
   report.volume_m3 = six_volume / 6.0;
+  std::vector<char> piece_open(static_cast<size_t>(n), 0);
+  for (const int v : open_at) piece_open[static_cast<size_t>(find_root(parent, v))] = 1;
+  report.in_closed_piece.resize(static_cast<size_t>(n));
+  for (int v = 0; v < n; ++v) {
+    const auto root = static_cast<size_t>(find_root(parent, v));
+    report.in_closed_piece[static_cast<size_t>(v)] = used[static_cast<size_t>(v)] && !piece_open[root] && piece_six_volume[root] > 0;
+  }
 
   // Notes: what, where, and what Systole does about it.
   const bool volume_usable = report.encloses_volume();

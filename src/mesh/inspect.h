@@ -20,6 +20,10 @@ struct MeshReport {
   int components = 0;            ///< Connected pieces (of triangles; unused vertices not counted).
   int unused_vertices = 0;       ///< Vertices no triangle uses.
   double volume_m3 = 0;          ///< Signed enclosed volume (meaningful when closed).
+  /// Per vertex: its connected piece is closed (every edge on exactly two triangles that run
+  /// it in opposite directions) and faces outwards (positive volume), so its back faces are
+  /// always hidden by its front ones.
+  std::vector<char> in_closed_piece;
   std::vector<std::string> notes;  ///< One line per finding, with an example location.
 
   bool closed() const { return triangles > 0 && boundary_edges == 0 && nonmanifold_edges == 0; }

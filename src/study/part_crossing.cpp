@@ -92,12 +92,11 @@ PartCrossingWatch::PartCrossingWatch(const mesh::OrganMesh& mesh, double band_m)
   }
   rest_.resize(3, vertices);
   for (int v = 0; v < vertices; ++v) rest_.col(v) = mesh.surface.positions[v];
-  rest_grid_ = grid_of(rest_, band_m_);
+  bin(rest_, band_m_, rest_grid_);
   stamp_.assign(triangles_.size(), 0);
 }
 
-PartCrossingWatch::Grid PartCrossingWatch::grid_of(const Eigen::Matrix3Xd& x, double cell_m) const {
-  Grid g;
+void PartCrossingWatch::bin(const Eigen::Matrix3Xd& x, double cell_m, Grid& g) const {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const auto& f : triangles_) {
     for (int k = 0; k < 3; ++k) {
@@ -115,13 +114,12 @@ PartCrossingWatch::Grid PartCrossingWatch::grid_of(const Eigen::Matrix3Xd& x, do
   };
   const std::size_t cells = std::size_t(g.size.x()) * g.size.y() * g.size.z();
   g.start.assign(cells + 1, 0);
-  std::vector<int> fill;
   // Two passes over each triangle's box of cells: count, then fill.
   for (int pass = 0; pass < 2; ++pass) {
     if (pass == 1) {
       for (std::size_t c = 0; c < cells; ++c) g.start[c + 1] += g.start[c];
       g.triangles.resize(g.start[cells]);
-      fill.assign(g.start.begin(), g.start.end() - 1);
+      g.fill.assign(g.start.begin(), g.start.end() - 1);
     }
     for (std::size_t t = 0; t < triangles_.size(); ++t) {
       const auto& f = triangles_[t];
@@ -134,14 +132,13 @@ PartCrossingWatch::Grid PartCrossingWatch::grid_of(const Eigen::Matrix3Xd& x, do
             if (pass == 0) {
               ++g.start[cell + 1];
             } else {
-              g.triangles[fill[cell]++] = static_cast<int>(t);
+              g.triangles[g.fill[cell]++] = static_cast<int>(t);
             }
           }
         }
       }
     }
   }
-  return g;
 }
 
 template <class Found>
@@ -198,10 +195,10 @@ void PartCrossingWatch::check(const Eigen::Matrix3Xd& positions, int frame) {
   // A vertex within the band of a part now was within band + its motion + the part's
   // motion of it at rest: that is how far its rest side is looked for.
   const double moved = (positions - rest_).colwise().norm().maxCoeff();
-  const Grid grid = grid_of(positions, band_m_);
+  bin(positions, band_m_, grid_);
   for (int v = 0; v < static_cast<int>(vertex_parts_.size()); ++v) {
     if (vertex_parts_[v].empty()) continue;
-    near_parts(grid, positions, v, band_m_, -1, [&](int part, double side) {
+    near_parts(grid_, positions, v, band_m_, -1, [&](int part, double side) {
       auto at_rest = rest_side_.find(key(v, part));
       if (at_rest == rest_side_.end()) {
         double rest_side = std::numeric_limits<double>::quiet_NaN();

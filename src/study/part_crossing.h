@@ -55,8 +55,10 @@ class PartCrossingWatch {
     Eigen::Vector3d min = Eigen::Vector3d::Zero();
     Eigen::Vector3i size = Eigen::Vector3i::Zero();
     std::vector<int> start, triangles;  ///< Cell c holds triangles[start[c] .. start[c + 1]).
+    std::vector<int> fill;              ///< Scratch of bin: the next free slot per cell.
   };
-  Grid grid_of(const Eigen::Matrix3Xd& x, double cell_m) const;
+  /// Bins the triangles at positions `x` into `grid` (its storage reused: a check a frame).
+  void bin(const Eigen::Matrix3Xd& x, double cell_m, Grid& grid) const;
   /// For each part other than the vertex's own with a point within `radius_m` of vertex v
   /// at `x` (only `part` when >= 0): found(part, side), the signed distance to the nearest
   /// such point, positive on the side its triangle faces, NaN where the point lies on an
@@ -69,7 +71,7 @@ class PartCrossingWatch {
   std::vector<int> triangle_part_;          ///< Per triangle: its part (index into part_names_).
   std::vector<std::vector<int>> vertex_parts_;  ///< Per vertex: the checked parts it belongs to.
   Eigen::Matrix3Xd rest_;
-  Grid rest_grid_;
+  Grid rest_grid_, grid_;  ///< At rest, and at the last check.
   double band_m_ = 0;
   std::unordered_map<std::uint64_t, double> rest_side_;  ///< (vertex, part) -> signed distance at rest.
   mutable std::vector<int> stamp_;

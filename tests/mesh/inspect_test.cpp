@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh/icosphere.h"
 #include "mesh/weld.h"
 #include "test_meshes.h"
 
@@ -141,6 +142,36 @@ TEST(Weld, ToleranceIsRelativeToSize) {
     OrganMesh organ{m, {"cube"}, std::vector<int>(8, 0)};
     EXPECT_EQ(weld(organ, default_weld_tolerance(m)), 0);
     EXPECT_TRUE(inspect(organ.surface).clean());
+  }
+}
+
+}  // namespace
+}  // namespace systole::mesh
+
+namespace systole::mesh {
+namespace {
+
+TEST(Inspect, ClosedOutwardPiecesAreMarkedPerVertex) {
+  // A ball (closed, outward), an inside-out ball and an open sheet, as one mesh.
+  const TriangleMesh ball = icosphere(0.02, 1);
+  TriangleMesh m = ball;
+  const auto append = [&](const TriangleMesh& piece, const Eigen::Vector3d& offset, bool flip) {
+    const int first = static_cast<int>(m.positions.size());
+    for (const auto& p : piece.positions) m.positions.push_back(p + offset);
+    for (const auto& t : piece.triangles) {
+      m.triangles.push_back(Eigen::Vector3i(t[0], flip ? t[2] : t[1], flip ? t[1] : t[2]) + Eigen::Vector3i::Constant(first));
+    }
+  };
+  append(ball, Eigen::Vector3d(0.1, 0, 0), true);
+  TriangleMesh sheet;
+  sheet.positions = {{0, 0, 0.1}, {0.01, 0, 0.1}, {0, 0.01, 0.1}};
+  sheet.triangles = {{0, 1, 2}};
+  append(sheet, Eigen::Vector3d::Zero(), false);
+  const MeshReport r = inspect(m);
+  ASSERT_EQ(r.in_closed_piece.size(), m.positions.size());
+  const std::size_t n = ball.positions.size();
+  for (std::size_t v = 0; v < m.positions.size(); ++v) {
+    EXPECT_EQ(r.in_closed_piece[v] != 0, v < n) << "vertex " << v << (v < n ? " of the ball" : v < 2 * n ? " of the inside-out ball" : " of the sheet");
   }
 }
 
