@@ -5,6 +5,7 @@
 #include "clip/camera_framing.h"
 #include "clip/limits.h"
 #include "scene/load.h"
+#include "study/physiology.h"
 #include "study/summary.h"
 #include "world/world.h"
 
@@ -25,12 +26,16 @@ Command add_validate_command(CLI::App& app) {
     std::string scene;
     std::vector<std::string> defines;
     bool allow_large = false;
+    bool physiology = false;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("validate", "Parse a scene and build its model; render nothing.");
   cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
   add_define_option(*cmd, o->defines);
   add_allow_large_flag(*cmd, o->allow_large);
+  cmd->add_flag("--physiology", o->physiology,
+                "Also simulate the generated heart and print the figures a cardiologist measures (volumes, ejection "
+                "fraction, shortening, thickening, twist, valve timing) against their normal ranges (docs/anatomy.md)");
   return {cmd, [o] {
             const auto scene = scene::load(o->scene, o->defines);
             // The limits `render` would apply to the default video, so a scene that passes here renders.
@@ -40,7 +45,9 @@ Command add_validate_command(CLI::App& app) {
             clip::check_world_limits(scene, world, limits);
             const auto placed = clip::with_cameras_placed(scene, world);
             clip::check_organs_in_view(placed, world);
-            std::cout << study::summarize(placed, world) << "ok\n";
+            std::cout << study::summarize(placed, world);
+            if (o->physiology) std::cout << study::physiology_text(study::measure_physiology(scene));
+            std::cout << "ok\n";
             return 0;
           }};
 }

@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "mesh/anatomy.h"
+
 namespace systole::mesh {
 
 struct TriangleMesh {
@@ -27,6 +29,9 @@ struct OrganMesh {
   /// Triangles the import left out: a corner repeated, in the file or once vertices closer
   /// than the weld tolerance became one (validate's mesh report says how many).
   int dropped_triangles = 0;
+  /// The generator's volumetric body, cavities, valves and landmarks (the anatomical heart);
+  /// empty for a surface from a file.
+  Anatomy anatomy;
 
   int part_index(const std::string& name) const;  ///< -1 if absent.
   /// Per vertex: 1 if it belongs to `part` (first or otherwise), else 0.

@@ -50,21 +50,54 @@ bool selects(const scene::Selector& selector, bool in_part, const Eigen::Vector3
   return false;
 }
 
-// Units, centring, then the transform: x' = T + Rz Ry Rx (s x).
+// Units, centring, then the transform: x' = T + Rz Ry Rx (s x); the anatomy's points alike.
 void place(OrganMesh& mesh, const scene::MeshSource& source, const scene::Transform& transform) {
-  std::vector<Eigen::Vector3d>& positions = mesh.surface.positions;
-  for (Eigen::Vector3d& p : positions) p *= source.unit_m;
+  const std::vector<Eigen::Vector3d>& positions = mesh.surface.positions;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   if (source.center && !positions.empty()) {
     Eigen::Vector3d lo = positions.front(), hi = positions.front();
     for (const Eigen::Vector3d& p : positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    const Eigen::Vector3d centre = 0.5 * (lo + hi);
-    for (Eigen::Vector3d& p : positions) p -= centre;
+    centre = 0.5 * (lo + hi) * source.unit_m;
   }
   const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(transform.rotate_rad.z(), Eigen::Vector3d::UnitZ()) *
                                     Eigen::AngleAxisd(transform.rotate_rad.y(), Eigen::Vector3d::UnitY()) *
                                     Eigen::AngleAxisd(transform.rotate_rad.x(), Eigen::Vector3d::UnitX()))
                                        .toRotationMatrix();
-  for (Eigen::Vector3d& p : positions) p = transform.translate_m + rotation * (transform.scale * p);
+  auto move = [&](Eigen::Vector3d& p) { p = transform.translate_m + rotation * (transform.scale * (p * source.unit_m - centre)); };
+  for (Eigen::Vector3d& p : mesh.surface.positions) move(p);
+  for (Eigen::Vector3d& p : mesh.anatomy.myocardium.nodes) move(p);
+  for (Valve& valve : mesh.anatomy.valves) {
+    for (Eigen::Vector3d& p : valve.open_positions) move(p);
+  }
+}
+
+// The region of every myocardium node: the regions' selectors applied to the nodes (by
+// part, or by place), a later region taking a node from an earlier one. A region that
+// selects no node (a valve's colour) is no error: it acts on the surface only.
+std::vector<int> node_regions(const OrganMesh& mesh, const std::vector<scene::Region>& regions) {
+  const Myocardium& myo = mesh.anatomy.myocardium;
+  std::vector<int> node_region(myo.nodes.size(), -1);
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    std::vector<scene::Selector> select = regions[r].select;
+    if (select.empty()) {
+      scene::Selector by_name;
+      by_name.kind = scene::SelectorKind::kPart;
+      by_name.part = regions[r].name;
+      select.push_back(by_name);
+    }
+    for (const scene::Selector& selector : select) {
+      std::vector<char> in_part(myo.nodes.size(), 0);
+      if (selector.kind == scene::SelectorKind::kPart) {
+        const int part = mesh.part_index(selector.part);
+        for (std::size_t n = 0; n < myo.nodes.size(); ++n) in_part[n] = myo.node_part[n] == part;
+        for (const auto& [n, p] : myo.node_also_in) in_part[n] |= p == part;
+      }
+      for (std::size_t n = 0; n < myo.nodes.size(); ++n) {
+        if (selects(selector, in_part[n], myo.nodes[n])) node_region[n] = static_cast<int>(r);
+      }
+    }
+  }
+  return node_region;
 }
 
 /// "17.3 cm", "3.46e+30 m": a length as a person reads it.
@@ -204,6 +237,7 @@ OrganGeometry build_organ_geometry(const scene::Organ& organ) {
   }
   try {
     geometry.vertex_region = assign_regions(geometry.mesh, organ.regions);
+    geometry.node_region = node_regions(geometry.mesh, organ.regions);
   } catch (const Error& error) {
     throw Error(error.code(), std::string(error.what()) + " [in " + label + "]");
   }

@@ -5,7 +5,7 @@
 
 namespace systole::mesh {
 
-std::vector<std::string> procedural_organs() { return {"heart", "lungs", "kidney", "liver"}; }
+std::vector<std::string> procedural_organs() { return {"heart", "anatomical_heart", "lungs", "kidney", "liver"}; }
 
 OrganMesh generate_organ(const std::string& name, int detail) {
   if (detail < 1 || detail > 6) {
@@ -13,6 +13,7 @@ OrganMesh generate_organ(const std::string& name, int detail) {
                                           std::to_string(detail));
   }
   if (name == "heart") return procedural::heart(detail);
+  if (name == "anatomical_heart") return procedural::anatomical_heart(detail);
   if (name == "lungs") return procedural::lungs(detail);
   if (name == "kidney") return procedural::kidney(detail);
   if (name == "liver") return procedural::liver(detail);

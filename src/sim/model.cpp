@@ -179,11 +179,12 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
   }
 
   // A spring between two pinned particles does nothing and is not built.
-  std::vector<int> a, b;
+  std::vector<int> a, b, kept;
   std::vector<double> stiffness;
   for (std::size_t p = 0; p < parts.springs.size(); ++p) {
     const auto [i, j] = parts.springs[p];
     if (m.inverse_mass[i] == 0 && m.inverse_mass[j] == 0) continue;
+    kept.push_back(static_cast<int>(p));
     a.push_back(i);
     b.push_back(j);
     stiffness.push_back(parts.spring_stiffness_N_per_m[p]);
@@ -211,6 +212,10 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
     s.damping_s.push_back(organ.body.damping_s * damping_scale);
     s.region_a.push_back(ri);
     s.region_b.push_back(rj);
+    if (!parts.fibre_share.empty()) {
+      s.fibre_share.push_back(parts.fibre_share[kept[idx]]);
+      s.normal_share.push_back(parts.normal_share[kept[idx]]);
+    }
   }
 
   // The volume constraint needs a closed surface.

@@ -207,7 +207,7 @@ void embed(const Embedding& e, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out)
   for (int v = 0; v < e.vertex_count(); ++v) {
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     for (int k = 0; k < 8; ++k) p += e.weight(k, v) * x.col(e.node(k, v));
-    out.col(v) = p;
+    out.col(v) = e.offset.cols() ? Eigen::Vector3d(p + e.offset.col(v)) : p;
   }
 }
 

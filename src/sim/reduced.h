@@ -16,10 +16,13 @@
 namespace systole::sim {
 
 /// Render-mesh vertices as fixed combinations of particles: vertex v = sum over k of
-/// weight(k, v) * x(node(k, v)). Empty: the render mesh is the particles themselves.
+/// weight(k, v) * x(node(k, v)) (+ offset(v)). Empty: the render mesh is the particles themselves.
 struct Embedding {
   Eigen::Matrix<int, 8, Eigen::Dynamic> node;       ///< The 8 corners of the voxel holding each vertex.
   Eigen::Matrix<double, 8, Eigen::Dynamic> weight;  ///< Trilinear weights, summing to 1. unit: 1
+  /// Per vertex, added: where it lies at rest beyond the weighted particles (a myocardium's
+  /// smooth surface over its coarser lattice); empty: none. unit: m
+  Eigen::Matrix3Xd offset;
 
   bool empty() const { return node.cols() == 0; }
   int vertex_count() const { return static_cast<int>(node.cols()); }

@@ -6,6 +6,7 @@
 
 #include "common/error.h"
 #include "sim/from_scene.h"
+#include "sim/myocardium.h"
 #include "sim/solvers/step.h"
 #include "sim/solvers/step_size.h"
 
@@ -66,7 +67,12 @@ World build_world(const scene::Scene& scene) {
     sim::OrganParams params = sim::organ_params(organ);
     params.body.lattice = choice.lattice;
     const sim::ModelOptions options = sim::model_options(scene, organ.name, w.dt_s);
-    if (choice.lattice > 0) {
+    if (choice.myocardium) {
+      sim::ReducedBody myocardium = sim::build_myocardium_model(params, body.geometry, options);
+      body.model = std::move(myocardium.model);
+      body.embedding = std::move(myocardium.embedding);
+      body.valves = valve_motion(body.geometry.mesh.anatomy, body.geometry.mesh.surface.positions);
+    } else if (choice.lattice > 0) {
       sim::ReducedBody reduced = sim::build_reduced_model(params, body.geometry, options);
       body.model = std::move(reduced.model);
       body.embedding = std::move(reduced.embedding);
@@ -83,7 +89,12 @@ World build_world(const scene::Scene& scene) {
 
 BodyChoice choose_body(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
   if (organ.body.lattice != scene::Body::kLatticeAuto) {
-    return {organ.body.lattice, "as the scene sets (body.lattice: " + std::to_string(organ.body.lattice) + ")"};
+    return {organ.body.lattice, false, "as the scene sets (body.lattice: " + std::to_string(organ.body.lattice) + ")"};
+  }
+  if (!geometry.mesh.anatomy.empty()) {
+    const mesh::Myocardium& m = geometry.mesh.anatomy.myocardium;
+    return {0, true, "auto: the generated myocardium, " + std::to_string(m.nodes.size()) + " particles through the walls and " +
+                         std::to_string(m.springs.size()) + " springs along and across the muscle fibres"};
   }
   const mesh::MeshReport& r = geometry.report;
   std::vector<std::string> why;
@@ -93,15 +104,18 @@ BodyChoice choose_body(const scene::Organ& organ, const mesh::OrganGeometry& geo
     if (r.vertices > kAutoLatticeVertices) why.push_back("it has " + std::to_string(r.vertices) + " vertices");
   }
   if (why.empty()) {
-    return {0, "auto: full model, every vertex a particle (" +
+    return {0, false, "auto: full model, every vertex a particle (" +
                    std::string(organ.mesh.file.empty() ? "a generated organ" : "a closed surface in one piece") + ")"};
   }
   std::string text = "auto: lattice " + std::to_string(kAutoLattice) + ", since ";
   for (std::size_t i = 0; i < why.size(); ++i) text += (i == 0 ? "" : i + 1 == why.size() ? " and " : ", ") + why[i];
-  return {kAutoLattice, text + ": one volumetric body moves the parts together; body.lattice: 0 simulates every vertex"};
+  return {kAutoLattice, false, text + ": one volumetric body moves the parts together; body.lattice: 0 simulates every vertex"};
 }
 
-void render_positions(const OrganBody& body, Eigen::Matrix3Xd& out) { sim::embed(body.embedding, body.state.x, out); }
+void render_positions(const OrganBody& body, Eigen::Matrix3Xd& out) {
+  sim::embed(body.embedding, body.state.x, out);
+  open_valves(body.valves, out);
+}
 
 void advance_to_frame(World& w, int frame) {
   for (const int target = w.start_frame + frame; w.frames_done < target; ++w.frames_done) {
@@ -112,6 +126,10 @@ void advance_to_frame(World& w, int frame) {
         m << "simulation diverged at frame " << w.frames_done + 1 << " (t = " << body.state.time_s << " s): "
           << *problem << ". Remedy: " << sim::divergence_remedy(body.model) << ".";
         throw Error(ExitCode::kDiverged, m.str());
+      }
+      if (!body.valves.empty()) {
+        sim::embed(body.embedding, body.state.x, w.scratch_positions);
+        update_valves(body.valves, w.scratch_positions, w.frame_s);
       }
       if (!body.folds.due(body.state.time_s)) continue;
       // A full model's particles are its render vertices; a lattice's are embedded first.

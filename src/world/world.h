@@ -8,6 +8,7 @@
 
 #include "mesh/organ.h"
 #include "world/fold_watch.h"
+#include "world/valves.h"
 #include "scene/scene.h"
 #include "sim/model.h"
 #include "sim/reduced.h"
@@ -21,17 +22,19 @@ struct OrganBody {
   sim::State state;
   sim::Embedding embedding;      ///< How the render mesh follows a reduced model; empty: full model.
   FoldWatch folds;               ///< Lasting crumpling of a driven region (checked every frame).
+  ValveMotion valves;            ///< An anatomical heart's valves, opened by the flow every frame.
   int lattice = 0;               ///< The body's lattice as built (0: full model).
   std::string body_reason;       ///< Why this body (choose_body), for `validate`.
 };
 
 /// The body an organ gets: the scene's `body.lattice` when it gives a number; for `auto`,
-/// a lattice of kAutoLattice voxels for a mesh file that is open, in several pieces or over
+/// the generator's myocardium when the mesh has one (the anatomical heart), else a lattice of kAutoLattice voxels for a mesh file that is open, in several pieces or over
 /// kAutoLatticeVertices vertices (an atlas organ of many overlapping open parts: one
 /// volumetric body moves them together and costs what its voxels cost, not its triangles),
 /// else the full model (every vertex a particle: accurate on a closed surface).
 struct BodyChoice {
   int lattice = 0;
+  bool myocardium = false;  ///< The generator's own volumetric myocardium (sim/myocardium.h).
   std::string reason;
 };
 inline constexpr int kAutoLattice = 12;
@@ -39,7 +42,7 @@ inline constexpr int kAutoLatticeVertices = 50000;
 BodyChoice choose_body(const scene::Organ& organ, const mesh::OrganGeometry& geometry);
 
 /// The body's render-mesh positions now: the particles of a full model, or the mesh
-/// embedded in a reduced model's lattice. unit: m
+/// embedded in a reduced model's lattice or a myocardium, valves opened. unit: m
 void render_positions(const OrganBody& body, Eigen::Matrix3Xd& out);
 
 struct World {

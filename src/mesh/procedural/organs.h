@@ -14,6 +14,15 @@ int target_triangles(int detail);
 /// superior_vena_cava, inferior_vena_cava.
 OrganMesh heart(int detail);
 
+/// The anatomical heart (procedural/anatomical_heart.cpp): the same place and size as
+/// heart(), hollow, with four chambers in muscular walls, the septa, atrial appendages, four
+/// valves, hollow great vessels and coronary arteries, and its anatomy (mesh/anatomy.h): a
+/// volumetric myocardium with fibre directions, the cavities, valves and landmarks. Parts:
+/// heart()'s, and pulmonary_veins, the four <chamber>_cavity linings, interventricular_septum,
+/// interatrial_septum, left_atrial_appendage, right_atrial_appendage, mitral_valve,
+/// tricuspid_valve, aortic_valve, pulmonary_valve, coronary_arteries.
+OrganMesh anatomical_heart(int detail);
+
 /// Both lungs, about 25 cm apex to base and 28 cm across, as two closed surfaces plus the
 /// airway (trachea and main bronchi) as a third. The left lung is the smaller, hollowed by
 /// the heart, with the cardiac notch. Parts: right_upper_lobe, right_middle_lobe,

@@ -1,0 +1,80 @@
+#pragma once
+// What a generator knows about an organ beyond its surface: the volumetric body inside its
+// walls, the cavities the walls enclose, the valves between them and the landmarks a
+// clinician measures. Only the anatomical heart has one (mesh/procedural/heart.cpp);
+// surfaces from files have none.
+
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace systole::mesh {
+
+/// The muscle as particles through the walls (a hexahedral lattice laid along each wall:
+/// around, along and across it) joined by springs, with the direction of the muscle fibres
+/// each spring sees, and every surface vertex a fixed combination of particles.
+struct Myocardium {
+  std::vector<Eigen::Vector3d> nodes;  ///< unit: m
+  std::vector<int> node_part;          ///< Per node: index into the mesh's part_names.
+  std::vector<std::pair<int, int>> node_also_in;  ///< (node, part): other parts a node belongs to.
+  std::vector<double> node_volume_m3;  ///< Per node: its share of the wall's volume. unit: m^3
+  std::vector<std::pair<int, int>> springs;
+  /// Per spring: its share of the cells' volume over its rest length squared, divided by the
+  /// mean, so a uniform material gives each spring the stiffness its cells need. unit: 1
+  std::vector<double> spring_weight;
+  /// Per spring: squared cosines of its direction with the fibre and with the wall's normal
+  /// (the sheet normal), where it lies. A fibre share of -1 marks a spring without fibres
+  /// (a vessel's, the glue between walls): driven, it shortens evenly like a surface spring. unit: 1
+  std::vector<double> fibre_share, normal_share;
+  /// Per surface vertex: up to 8 nodes and weights (summing to 1) it follows.
+  std::vector<std::array<int, 8>> vertex_nodes;
+  std::vector<std::array<double, 8>> vertex_weights;
+
+  bool empty() const { return nodes.empty(); }
+};
+
+/// A cavity's lining (the endocardium), its triangles facing into the blood; its open edges
+/// are the valve annuli, closed by flat caps when its volume is measured.
+struct Cavity {
+  std::string name;  ///< "left_ventricle", ...
+  std::vector<Eigen::Vector3i> lining;
+};
+
+/// A valve's leaflets: surface vertices that swing between their closed place (where the
+/// surface has them) and their open place as blood flows through.
+struct Valve {
+  std::string name;       ///< "mitral_valve", ...
+  std::string chamber;    ///< The ventricle whose volume decides it.
+  bool opens_on_filling;  ///< Inflow valve (opens while the ventricle fills) or outflow (while it empties).
+  std::vector<int> vertices;
+  std::vector<Eigen::Vector3d> open_positions;  ///< Per vertex, at rest. unit: m
+};
+
+/// Surface vertices where the left ventricle's shape is measured (docs/anatomy.md).
+struct VentricleLandmarks {
+  int apex = -1;                          ///< Epicardial apex.
+  std::vector<int> annulus;               ///< The mitral annulus (lining ring).
+  std::vector<std::pair<int, int>> wall;  ///< Mid-ventricular (lining, epicardium) pairs across the wall.
+  std::vector<int> apical_ring, basal_ring;  ///< Epicardial rings for the twist.
+};
+
+struct Anatomy {
+  Myocardium myocardium;
+  std::vector<Cavity> cavities;
+  std::vector<Valve> valves;
+  VentricleLandmarks left_ventricle;
+  /// The chamber walls' surfaces (outside and lining), facing out of the muscle: they
+  /// enclose the myocardium, whose volume shows how nearly incompressible it stays.
+  std::vector<Eigen::Vector3i> muscle;
+
+  bool empty() const { return myocardium.empty(); }
+};
+
+/// Volume enclosed by a cavity's lining at `positions`, each open edge loop closed by a
+/// fan about its centroid. unit: m^3
+double cavity_volume(const Cavity& cavity, const std::vector<Eigen::Vector3d>& positions);
+double cavity_volume(const Cavity& cavity, const Eigen::Matrix3Xd& positions);
+
+}  // namespace systole::mesh

@@ -1,0 +1,224 @@
+#include "study/physiology.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "common/error.h"
+#include "world/world.h"
+
+namespace systole::study {
+namespace {
+
+constexpr double kMl = 1e-6;  // m^3 per ml
+
+Eigen::Vector3d centroid(const std::vector<int>& ring, const Eigen::Matrix3Xd& x) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int v : ring) c += x.col(v);
+  return c / static_cast<double>(ring.size());
+}
+
+// Mean signed rotation of a ring about `axis` from `before` to `now`, each vertex about its
+// ring's centroid. unit: rad
+double ring_rotation(const std::vector<int>& ring, const Eigen::Matrix3Xd& before, const Eigen::Matrix3Xd& now,
+                     const Eigen::Vector3d& axis) {
+  const Eigen::Vector3d c0 = centroid(ring, before), c1 = centroid(ring, now);
+  double sum = 0;
+  for (int v : ring) {
+    Eigen::Vector3d a = before.col(v) - c0, b = now.col(v) - c1;
+    a -= a.dot(axis) * axis;
+    b -= b.dot(axis) * axis;
+    sum += std::atan2(axis.dot(a.cross(b)), a.dot(b));
+  }
+  return sum / static_cast<double>(ring.size());
+}
+
+double muscle_volume(const std::vector<Eigen::Vector3i>& triangles, const Eigen::Matrix3Xd& x) {
+  double six = 0;
+  for (const auto& t : triangles) six += x.col(t[0]).dot(x.col(t[1]).cross(x.col(t[2])));
+  return six / 6;
+}
+
+}  // namespace
+
+std::vector<std::string> PhysiologyReport::outside_normal() const {
+  std::vector<std::string> out;
+  auto check = [&](const char* name, double value, const NormalRange& range) {
+    if (!range.holds(value)) out.push_back(name);
+  };
+  check("end-diastolic volume", end_diastolic_ml, kEndDiastolicVolume);
+  check("end-systolic volume", end_systolic_ml, kEndSystolicVolume);
+  check("ejection fraction", ejection_fraction_pct, kEjectionFraction);
+  check("long-axis shortening", long_axis_shortening_pct, kLongAxisShortening);
+  check("wall thickening", wall_thickening_pct, kWallThickening);
+  check("twist", twist_deg, kTwist);
+  check("ejection time", ejection_pct, kEjectionShare);
+  return out;
+}
+
+PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats) {
+  world::World world = world::build_world(scene);
+  PhysiologyReport report;
+  report.scene = scene.path;
+  int organ = -1;
+  for (std::size_t o = 0; o < world.organs.size() && organ < 0; ++o) {
+    if (!world.organs[o].geometry.mesh.anatomy.empty()) organ = static_cast<int>(o);
+  }
+  if (organ < 0) {
+    throw Error(ExitCode::kUsage, scene.path + ": --physiology measures a generated anatomical heart "
+                                               "(mesh: {procedural: heart}); no organ of this scene has one");
+  }
+  world::OrganBody& body = world.organs[organ];
+  report.organ = body.model.name;
+  const sim::RegionParams* ventricle = nullptr;
+  for (const auto& r : body.model.regions) {
+    if (r.name == "left_ventricle" && r.drive.waveform != sim::Waveform::kNone && r.drive.rate_hz > 0) ventricle = &r;
+  }
+  if (!ventricle) {
+    throw Error(ExitCode::kUsage, scene.path + ": --physiology times the beat by the left ventricle's drive; organ '" +
+                                      report.organ + "' has no region left_ventricle with a periodic drive");
+  }
+  report.beat_s = 1.0 / ventricle->drive.rate_hz;
+  report.frame_s = world.frame_s;
+  report.measured_from_s = settle_beats * report.beat_s + ventricle->drive.delay_s;
+  const mesh::Anatomy& anatomy = body.geometry.mesh.anatomy;
+  const mesh::VentricleLandmarks& lv = anatomy.left_ventricle;
+
+  // One frame before the beat to one after it: the valves need the flow on both sides.
+  const int first = static_cast<int>(std::floor(report.measured_from_s / world.frame_s)) - 1;
+  const int last = static_cast<int>(std::ceil((report.measured_from_s + report.beat_s) / world.frame_s)) + 1;
+  std::vector<double> times;
+  std::vector<Eigen::Matrix3Xd> shapes;
+  std::vector<std::vector<double>> volumes, openings;
+  Eigen::Matrix3Xd x;
+  for (int f = 1; f <= last; ++f) {
+    world::advance_to_frame(world, f);
+    if (f < first) continue;
+    times.push_back(body.state.time_s);
+    sim::embed(body.embedding, body.state.x, x);
+    shapes.push_back(x);
+    std::vector<double> v;
+    for (const auto& cavity : anatomy.cavities) v.push_back(mesh::cavity_volume(cavity, x) / kMl);
+    volumes.push_back(std::move(v));
+    std::vector<double> o;
+    for (const auto& valve : body.valves.valves) o.push_back(valve.opening);
+    openings.push_back(std::move(o));
+  }
+  // The beat: frames within [start, start + beat).
+  const double start = report.measured_from_s;
+  std::vector<int> beat;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    if (times[i] >= start - 1e-9 && times[i] < start + report.beat_s - 1e-9) beat.push_back(static_cast<int>(i));
+  }
+  for (std::size_t c = 0; c < anatomy.cavities.size(); ++c) {
+    ChamberVolume chamber{anatomy.cavities[c].name, -HUGE_VAL, HUGE_VAL};
+    for (int i : beat) chamber.largest_ml = std::max(chamber.largest_ml, volumes[i][c]), chamber.smallest_ml = std::min(chamber.smallest_ml, volumes[i][c]);
+    report.chambers.push_back(chamber);
+  }
+  int lv_cavity = 0;
+  for (std::size_t c = 0; c < anatomy.cavities.size(); ++c) {
+    if (anatomy.cavities[c].name == "left_ventricle") lv_cavity = static_cast<int>(c);
+  }
+  int ed = beat.front(), es = beat.front();
+  for (int i : beat) {
+    if (volumes[i][lv_cavity] > volumes[ed][lv_cavity]) ed = i;
+    if (volumes[i][lv_cavity] < volumes[es][lv_cavity]) es = i;
+  }
+  report.end_diastolic_ml = volumes[ed][lv_cavity];
+  report.end_systolic_ml = volumes[es][lv_cavity];
+  report.ejection_fraction_pct = 100 * (report.end_diastolic_ml - report.end_systolic_ml) / report.end_diastolic_ml;
+  report.end_systole_ms = 1000 * (times[es] - start);
+
+  auto long_axis = [&](const Eigen::Matrix3Xd& s) { return (s.col(lv.apex) - centroid(lv.annulus, s)).norm(); };
+  auto thickness = [&](const Eigen::Matrix3Xd& s) {
+    double sum = 0;
+    for (const auto& [inner, outer] : lv.wall) sum += (s.col(outer) - s.col(inner)).norm();
+    return sum / static_cast<double>(lv.wall.size());
+  };
+  report.long_axis_shortening_pct = 100 * (1 - long_axis(shapes[es]) / long_axis(shapes[ed]));
+  report.wall_thickening_pct = 100 * (thickness(shapes[es]) / thickness(shapes[ed]) - 1);
+  // Twist: apical minus basal rotation from end-diastole, at its peak over the beat.
+  const double to_deg = 180 / std::numbers::pi;
+  report.twist_deg = -HUGE_VAL;
+  const double muscle0 = muscle_volume(anatomy.muscle, shapes[ed]);
+  for (int i : beat) {
+    const Eigen::Vector3d axis = (shapes[i].col(lv.apex) - centroid(lv.annulus, shapes[i])).normalized();
+    const double apical = to_deg * ring_rotation(lv.apical_ring, shapes[ed], shapes[i], axis);
+    const double basal = to_deg * ring_rotation(lv.basal_ring, shapes[ed], shapes[i], axis);
+    if (apical - basal > report.twist_deg) {
+      report.twist_deg = apical - basal;
+      report.apical_rotation_deg = apical;
+      report.basal_rotation_deg = basal;
+    }
+    report.muscle_volume_change_pct =
+        std::max(report.muscle_volume_change_pct, 100 * std::abs(muscle_volume(anatomy.muscle, shapes[i]) / muscle0 - 1));
+  }
+  // Valve events: where the opening leaves or returns to 0, between frames, within the beat.
+  for (std::size_t v = 0; v < body.valves.valves.size(); ++v) {
+    for (std::size_t i = 1; i < times.size(); ++i) {
+      const bool was_open = openings[i - 1][v] > 0, is_open = openings[i][v] > 0;
+      if (was_open == is_open) continue;
+      const double t = 0.5 * (times[i - 1] + times[i]);
+      if (t < start || t >= start + report.beat_s) continue;
+      report.valve_events.push_back({anatomy.valves[v].name, is_open, 1000 * (t - start)});
+      if (anatomy.valves[v].name == "aortic_valve") report.ejection_pct += 0;  // Summed below.
+    }
+    if (anatomy.valves[v].name == "aortic_valve") {
+      int open_frames = 0;
+      for (int i : beat) open_frames += openings[i][v] > 0;
+      report.ejection_pct = 100.0 * open_frames / static_cast<double>(beat.size());
+    }
+  }
+  std::sort(report.valve_events.begin(), report.valve_events.end(),
+            [](const ValveEvent& a, const ValveEvent& b) { return a.after_activation_ms < b.after_activation_ms; });
+  return report;
+}
+
+std::string physiology_text(const PhysiologyReport& r) {
+  std::string out;
+  char line[256];
+  auto figure = [&](const char* name, double value, const char* unit, const NormalRange& range) {
+    std::snprintf(line, sizeof line, "  %-26s %7.1f %-4s normal %g-%g %s (%s)\n", name, value, unit, range.low, range.high,
+                  range.holds(value) ? "  " : "!!", range.source);
+    out += line;
+  };
+  std::snprintf(line, sizeof line, "physiology of %s in %s: beat %.0f ms, measured from %.3f s (the %s's activation), sampled every %.1f ms\n",
+                r.organ.c_str(), r.scene.c_str(), 1000 * r.beat_s, r.measured_from_s, "left ventricle", 1000 * r.frame_s);
+  out += line;
+  out += "  chamber volumes (largest -> smallest, emptied):\n";
+  for (const auto& c : r.chambers) {
+    std::snprintf(line, sizeof line, "    %-18s %6.1f -> %5.1f ml  %4.1f %%\n", c.name.c_str(), c.largest_ml, c.smallest_ml, c.emptied_pct());
+    out += line;
+  }
+  out += "  left ventricle:\n";
+  figure("end-diastolic volume", r.end_diastolic_ml, "ml", kEndDiastolicVolume);
+  figure("end-systolic volume", r.end_systolic_ml, "ml", kEndSystolicVolume);
+  figure("ejection fraction", r.ejection_fraction_pct, "%", kEjectionFraction);
+  figure("long-axis shortening", r.long_axis_shortening_pct, "%", kLongAxisShortening);
+  figure("wall thickening", r.wall_thickening_pct, "%", kWallThickening);
+  figure("twist", r.twist_deg, "deg", kTwist);
+  std::snprintf(line, sizeof line, "    (apex %+.1f deg, base %+.1f deg, anticlockwise seen from the apex; end-systole %.0f ms after activation)\n",
+                r.apical_rotation_deg, r.basal_rotation_deg, r.end_systole_ms);
+  out += line;
+  figure("ejection (aortic open)", r.ejection_pct, "%", kEjectionShare);
+  std::snprintf(line, sizeof line, "  myocardial volume varies by %.1f %% over the beat\n", r.muscle_volume_change_pct);
+  out += line;
+  out += "  valve events (ms after the left ventricle's activation):\n";
+  for (const auto& e : r.valve_events) {
+    std::snprintf(line, sizeof line, "    %6.0f ms  %s %s\n", e.after_activation_ms, e.valve.c_str(), e.opens ? "opens" : "closes");
+    out += line;
+  }
+  const auto outside = r.outside_normal();
+  if (outside.empty()) {
+    out += "  every figure within its normal range\n";
+  } else {
+    out += "  outside the normal range:";
+    for (std::size_t i = 0; i < outside.size(); ++i) out += (i ? ", " : " ") + outside[i];
+    out += "\n";
+  }
+  return out;
+}
+
+}  // namespace systole::study

@@ -1,0 +1,52 @@
+#include "world/valves.h"
+
+#include <algorithm>
+
+namespace systole::world {
+
+ValveMotion valve_motion(const mesh::Anatomy& anatomy, const std::vector<Eigen::Vector3d>& rest_positions) {
+  ValveMotion motion;
+  motion.cavities = anatomy.cavities;
+  for (const mesh::Cavity& cavity : motion.cavities) motion.rest_volume_m3.push_back(mesh::cavity_volume(cavity, rest_positions));
+  motion.last_volume_m3 = motion.rest_volume_m3;
+  for (const mesh::Valve& valve : anatomy.valves) {
+    ValveMotion::Leaflets leaflets;
+    leaflets.vertices = valve.vertices;
+    leaflets.inflow = valve.opens_on_filling;
+    leaflets.open_delta.resize(3, static_cast<Eigen::Index>(valve.vertices.size()));
+    for (std::size_t i = 0; i < valve.vertices.size(); ++i) {
+      leaflets.open_delta.col(static_cast<Eigen::Index>(i)) = valve.open_positions[i] - rest_positions[valve.vertices[i]];
+    }
+    for (std::size_t c = 0; c < motion.cavities.size(); ++c) {
+      if (motion.cavities[c].name == valve.chamber) leaflets.cavity = static_cast<int>(c);
+    }
+    motion.valves.push_back(std::move(leaflets));
+  }
+  return motion;
+}
+
+void update_valves(ValveMotion& motion, const Eigen::Matrix3Xd& positions, double frame_s) {
+  std::vector<double> volume(motion.cavities.size());
+  for (std::size_t c = 0; c < motion.cavities.size(); ++c) volume[c] = mesh::cavity_volume(motion.cavities[c], positions);
+  for (ValveMotion::Leaflets& valve : motion.valves) {
+    if (valve.cavity < 0) continue;
+    const double full = 0.5 * motion.rest_volume_m3[valve.cavity];  // m^3/s
+    const double flow = (volume[valve.cavity] - motion.last_volume_m3[valve.cavity]) / frame_s;
+    const double through = valve.inflow ? flow : -flow;
+    const double x = std::clamp((through - 0.05 * full) / (0.95 * full), 0.0, 1.0);
+    valve.opening = motion.measured ? x * x * (3 - 2 * x) : 0.0;
+  }
+  motion.last_volume_m3 = volume;
+  motion.measured = true;
+}
+
+void open_valves(const ValveMotion& motion, Eigen::Matrix3Xd& positions) {
+  for (const ValveMotion::Leaflets& valve : motion.valves) {
+    if (valve.opening == 0) continue;
+    for (std::size_t i = 0; i < valve.vertices.size(); ++i) {
+      positions.col(valve.vertices[i]) += valve.opening * valve.open_delta.col(static_cast<Eigen::Index>(i));
+    }
+  }
+}
+
+}  // namespace systole::world

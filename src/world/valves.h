@@ -1,0 +1,42 @@
+#pragma once
+// The valves of an anatomical heart (mesh/anatomy.h) open as blood flows through them: an
+// inflow valve (mitral, tricuspid) while its ventricle fills, an outflow valve (aortic,
+// pulmonary) while it empties; closed otherwise. The flow is the ventricle's volume change
+// between frames, measured on the simulated lining: nothing is keyed to the drive.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "mesh/anatomy.h"
+
+namespace systole::world {
+
+struct ValveMotion {
+  struct Leaflets {
+    std::vector<int> vertices;
+    Eigen::Matrix3Xd open_delta;  ///< Open minus closed place of each vertex, at rest. unit: m
+    int cavity = -1;              ///< The ventricle (index into the anatomy's cavities).
+    bool inflow = true;
+    double opening = 0;           ///< 0 closed .. 1 open.
+  };
+  std::vector<mesh::Cavity> cavities;
+  std::vector<Leaflets> valves;
+  std::vector<double> rest_volume_m3, last_volume_m3;  ///< Per cavity. unit: m^3
+  bool measured = false;
+
+  bool empty() const { return valves.empty(); }
+};
+
+/// The valves of `anatomy`, closed, with `rest_positions` the surface at rest. unit: m
+ValveMotion valve_motion(const mesh::Anatomy& anatomy, const std::vector<Eigen::Vector3d>& rest_positions);
+
+/// Sets each valve's opening from the flow into or out of its ventricle since the last call,
+/// `frame_s` earlier, with `positions` the surface now (valves closed). A valve is fully open
+/// at a flow of half the ventricle's rest volume a second (about a fifth of peak ejection)
+/// and shut below a twentieth of that.
+void update_valves(ValveMotion& valves, const Eigen::Matrix3Xd& positions, double frame_s);
+
+/// Moves the leaflets of `positions` (valves closed) to their current opening. unit: m
+void open_valves(const ValveMotion& valves, Eigen::Matrix3Xd& positions);
+
+}  // namespace systole::world

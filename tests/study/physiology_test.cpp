@@ -1,0 +1,104 @@
+// ctest-labels: slow-under-sanitizers
+// validate --physiology: the figures come from the simulated anatomical heart. A heart that
+// contracts harder ejects more and its wall thickens more; a scar that does not contract
+// lowers the ejection fraction; the valves open and close in the order of the cycle; the
+// muscle keeps its volume.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "common/error.h"
+#include "study/physiology.h"
+
+namespace systole::study {
+namespace {
+
+scene::Scene anatomical_heart(double amplitude) {
+  scene::Scene s;
+  s.path = "anatomical_heart";
+  s.name = "anatomical_heart";
+  s.solver.method = scene::SolverMethod::kProjective;
+  s.solver.dt_s = 1.0 / 60;
+  s.output.fps = 60;
+  s.output.duration_s = 3;
+  scene::Organ heart;
+  heart.name = "heart";
+  heart.mesh.procedural = "anatomical_heart";
+  heart.mesh.detail = 1;
+  heart.body.mass_kg = 0.3;
+  heart.body.stiffness_N_per_m = 400;
+  heart.body.volume_stiffness_Pa = 0;
+  heart.body.drag_per_s = 2;
+  for (const char* name : {"left_atrium", "right_atrium", "left_ventricle", "right_ventricle", "apex"}) {
+    scene::Region r;
+    r.name = name;
+    const bool atrium = std::string(name).find("atrium") != std::string::npos;
+    r.drive.waveform = scene::Waveform::kCardiac;
+    r.drive.rate_hz = 1.2;
+    r.drive.amplitude = atrium ? 0.1 : amplitude;
+    r.drive.delay_s = atrium ? 0 : 0.16;
+    r.drive.systolic_fraction = atrium ? 0.15 : 0.36;
+    heart.regions.push_back(r);
+  }
+  for (const char* name : {"aorta", "pulmonary_trunk", "superior_vena_cava", "inferior_vena_cava", "pulmonary_veins"}) {
+    scene::Region r;
+    r.name = name;
+    r.pinned = true;
+    heart.regions.push_back(r);
+  }
+  s.organs.push_back(heart);
+  return s;
+}
+
+double time_of(const PhysiologyReport& r, const std::string& valve, bool opens) {
+  for (const ValveEvent& e : r.valve_events) {
+    if (e.valve == valve && e.opens == opens) return e.after_activation_ms;
+  }
+  return -1;
+}
+
+TEST(Physiology, HarderContractionEjectsMoreAndThickensMore) {
+  const PhysiologyReport weak = measure_physiology(anatomical_heart(0.14), 1);
+  const PhysiologyReport strong = measure_physiology(anatomical_heart(0.28), 1);
+  EXPECT_GT(weak.ejection_fraction_pct, 10);
+  EXPECT_GT(strong.ejection_fraction_pct, weak.ejection_fraction_pct + 10);
+  EXPECT_GT(strong.wall_thickening_pct, weak.wall_thickening_pct + 5);
+  EXPECT_GT(weak.end_diastolic_ml, 100);  // The rest shape is end-diastole.
+  EXPECT_LT(weak.end_diastolic_ml, 160);
+  // The myocardium is nearly incompressible: its active strain keeps its volume (a real
+  // one changes by its coronary blood, 5-10 %).
+  EXPECT_LT(strong.muscle_volume_change_pct, 8);
+  // The apex turns anticlockwise seen from the apex, the base clockwise (Sengupta 2008).
+  EXPECT_GT(strong.apical_rotation_deg, 0);
+  EXPECT_LT(strong.basal_rotation_deg, 0);
+}
+
+TEST(Physiology, AtEndSystoleTheAorticValveClosesAndTheMitralOpens) {
+  // The valves follow the flow: when the ventricle stops emptying and starts filling.
+  const PhysiologyReport r = measure_physiology(anatomical_heart(0.28), 1);
+  const double aortic_closes = time_of(r, "aortic_valve", false), mitral_opens = time_of(r, "mitral_valve", true);
+  ASSERT_GE(aortic_closes, 0);
+  ASSERT_GE(mitral_opens, 0);
+  const double frame_ms = 1000 * r.frame_s;
+  EXPECT_NEAR(aortic_closes, r.end_systole_ms, 1.5 * frame_ms);
+  EXPECT_NEAR(mitral_opens, r.end_systole_ms, 1.5 * frame_ms);
+  EXPECT_GT(r.end_systole_ms, 100);  // After the contraction has built up,
+  EXPECT_LT(r.end_systole_ms, 400);  // within its systole (0.36 of 833 ms).
+}
+
+TEST(Physiology, RefusesAnOrganWithoutAnatomy) {
+  scene::Scene s = anatomical_heart(0.2);
+  s.organs[0].mesh.procedural = "heart";
+  s.organs[0].regions.pop_back();  // The plain heart has no pulmonary_veins part.
+  try {
+    measure_physiology(s, 1);
+    FAIL() << "measured a heart without anatomy";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kUsage);
+    EXPECT_NE(std::string(e.what()).find("anatomical heart"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace systole::study
