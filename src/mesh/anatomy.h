@@ -28,6 +28,9 @@ struct Myocardium {
   /// (the sheet normal), where it lies. A fibre share of -1 marks a spring without fibres
   /// (a vessel's, the glue between walls): driven, it shortens evenly like a surface spring. unit: 1
   std::vector<double> fibre_share, normal_share;
+  /// Per spring: how much the cross-fibre direction in the wall shortens with the fibre (its
+  /// share of the fibre's shortening). unit: 1
+  std::vector<double> cross_fibre;
   /// Per surface vertex: up to 8 nodes and weights (summing to 1) it follows.
   std::vector<std::array<int, 8>> vertex_nodes;
   std::vector<std::array<double, 8>> vertex_weights;
@@ -40,7 +43,12 @@ struct Myocardium {
 struct Cavity {
   std::string name;  ///< "left_ventricle", ...
   std::vector<Eigen::Vector3i> lining;
+  /// The lining's open edge loops, each in the order its cap turns like the lining (find_rims).
+  std::vector<std::vector<int>> rims;
 };
+
+/// Finds the cavity's rims: the directed edges its lining uses once, walked into loops.
+void find_rims(Cavity& cavity);
 
 /// A valve's leaflets: surface vertices that swing between their closed place (where the
 /// surface has them) and their open place as blood flows through.
@@ -72,8 +80,8 @@ struct Anatomy {
   bool empty() const { return myocardium.empty(); }
 };
 
-/// Volume enclosed by a cavity's lining at `positions`, each open edge loop closed by a
-/// fan about its centroid. unit: m^3
+/// Volume enclosed by a cavity's lining at `positions`, each rim closed by a fan about its
+/// centroid. unit: m^3
 double cavity_volume(const Cavity& cavity, const std::vector<Eigen::Vector3d>& positions);
 double cavity_volume(const Cavity& cavity, const Eigen::Matrix3Xd& positions);
 

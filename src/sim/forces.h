@@ -14,18 +14,22 @@ namespace systole::sim {
 
 /// Rest length of spring j given the regions' current contraction c (the mean of its two
 /// ends'). A spring without fibres shortens by c. In muscle with fibres the contraction is an
-/// active strain (Rossi et al. 2012, "Orthotropic active strain models for the numerical
-/// simulation of cardiac biomechanics", Int J Numer Meth Biomed Eng 28:761): the fibre
-/// shortens to 1 - c, the sheet normal (across the wall) lengthens to 1 / (1 - c) so the
-/// muscle keeps its volume, and a spring takes the length that stretch gives its direction.
-/// unit: m
+/// orthotropic active strain (Rossi et al. 2012, "Orthotropic active strain models for the
+/// numerical simulation of cardiac biomechanics", Int J Numer Meth Biomed Eng 28:761): the
+/// fibre shortens to 1 - c, the cross-fibre direction in the wall to 1 - k c (k the spring's
+/// cross-fibre ratio: cross-fibre shortening is measured in vivo, Costa et al. 1999), and the
+/// direction across the wall lengthens to 1 / ((1 - c)(1 - k c)) so the muscle keeps its
+/// volume; a spring takes the length that stretch gives its direction. unit: m
 inline double driven_rest_length(const Springs& sp, int j, const Eigen::VectorXd& contraction) {
   const double ca = sp.region_a[j] >= 0 ? contraction[sp.region_a[j]] : 0.0;
   const double cb = sp.region_b[j] >= 0 ? contraction[sp.region_b[j]] : 0.0;
   const double c = 0.5 * (ca + cb);
   if (sp.fibre_share.empty() || sp.fibre_share[j] < 0) return sp.rest_m[j] * (1.0 - c);
-  const double fibre = std::max(0.2, 1.0 - c), fibre2 = fibre * fibre;
-  return sp.rest_m[j] * std::sqrt(1.0 + sp.fibre_share[j] * (fibre2 - 1.0) + sp.normal_share[j] * (1.0 / fibre2 - 1.0));
+  const double fibre = std::max(0.2, 1.0 - c), cross = std::max(0.2, 1.0 - sp.cross_fibre[j] * c);
+  const double fibre2 = fibre * fibre, cross2 = cross * cross, normal2 = 1.0 / (fibre2 * cross2);
+  const double sheet = std::max(0.0, 1.0 - sp.fibre_share[j] - sp.normal_share[j]);  // Cross-fibre, in the wall.
+  return sp.rest_m[j] *
+         std::sqrt(1.0 + sp.fibre_share[j] * (fibre2 - 1.0) + sheet * (cross2 - 1.0) + sp.normal_share[j] * (normal2 - 1.0));
 }
 
 /// Rest volume of the volume constraint at time t: V0(t) = V0 (1 + amplitude phi(t - delay))

@@ -215,6 +215,7 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
     if (!parts.fibre_share.empty()) {
       s.fibre_share.push_back(parts.fibre_share[kept[idx]]);
       s.normal_share.push_back(parts.normal_share[kept[idx]]);
+      s.cross_fibre.push_back(parts.cross_fibre[kept[idx]]);
     }
   }
 

@@ -25,9 +25,9 @@ struct Springs {
   std::vector<double> damping_s;         ///< Stiffness-proportional damping time. unit: s
   std::vector<int> region_a, region_b;   ///< Drive region of each end (-1: undriven).
   /// Muscle with fibres (a myocardium): per spring, the squared cosine of its direction with
-  /// the fibre and with the sheet normal; a fibre share below 0, or empty vectors: no fibres
-  /// (sim/forces.h, driven_rest_length).
-  std::vector<double> fibre_share, normal_share;
+  /// the fibre and with the sheet normal, and the cross-fibre ratio k; a fibre share below 0,
+  /// or empty vectors: no fibres (sim/forces.h, driven_rest_length).
+  std::vector<double> fibre_share, normal_share, cross_fibre;
   std::vector<int> color_begin;          ///< Springs of colour c: [color_begin[c], color_begin[c+1]).
   int stretch_count = 0;                 ///< Springs on surface edges.
   int bending_count = 0;                 ///< Springs across edges (between the two opposite corners).
@@ -121,7 +121,7 @@ struct BodyParts {
   std::vector<std::pair<int, int>> springs;       ///< Stretch springs first, then bending springs.
   std::vector<double> spring_stiffness_N_per_m;   ///< Per spring, before region scales. unit: N/m
   int stretch_count = 0;                          ///< How many of `springs` are stretch springs.
-  std::vector<double> fibre_share, normal_share;  ///< Per spring (Springs); empty: no fibres.
+  std::vector<double> fibre_share, normal_share, cross_fibre;  ///< Per spring (Springs); empty: no fibres.
   std::vector<Eigen::Vector3i> volume_triangles;  ///< Closed, outward surface; empty: it encloses nothing.
   double volume_stiffness_scale = 1;  ///< Multiplies the bulk modulus (a lattice's hull is not the mesh). unit: 1
   double volume_drive_scale = 1;      ///< Multiplies body.volume_drive's amplitude (idem). unit: 1

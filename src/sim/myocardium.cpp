@@ -1,5 +1,7 @@
 #include "sim/myocardium.h"
 
+#include <algorithm>
+
 #include "sim/model.h"
 
 namespace systole::sim {
@@ -25,6 +27,7 @@ ReducedBody build_myocardium_model(const OrganParams& organ, const mesh::OrganGe
   for (double w : myo.spring_weight) parts.spring_stiffness_N_per_m.push_back(w * organ.body.stiffness_N_per_m);
   parts.fibre_share = myo.fibre_share;
   parts.normal_share = myo.normal_share;
+  parts.cross_fibre = myo.cross_fibre;
   // An interaction reaches the nodes of the cells under the surface it touches.
   parts.interaction_reach_m = 0.01;
 

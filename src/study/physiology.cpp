@@ -163,7 +163,6 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
       const double t = 0.5 * (times[i - 1] + times[i]);
       if (t < start || t >= start + report.beat_s) continue;
       report.valve_events.push_back({anatomy.valves[v].name, is_open, 1000 * (t - start)});
-      if (anatomy.valves[v].name == "aortic_valve") report.ejection_pct += 0;  // Summed below.
     }
     if (anatomy.valves[v].name == "aortic_valve") {
       int open_frames = 0;

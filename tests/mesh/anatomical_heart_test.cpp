@@ -84,8 +84,11 @@ TEST(CavityVolume, CapsOpenRimsWhateverTheirSize) {
   for (int i = 0; i < 8; ++i) x.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
   const std::vector<Eigen::Vector3i> outward = {{0, 2, 1}, {1, 2, 3}, {0, 1, 5}, {0, 5, 4}, {1, 3, 7}, {1, 7, 5},
                                                 {3, 2, 6}, {3, 6, 7}, {2, 0, 4}, {2, 4, 6}};  // No top (z = 1).
-  Cavity c{"box", {}};
+  Cavity c{"box", {}, {}};
   for (const auto& t : outward) c.lining.emplace_back(t[0], t[2], t[1]);  // Facing into the box.
+  find_rims(c);
+  ASSERT_EQ(c.rims.size(), 1u);
+  EXPECT_EQ(c.rims[0].size(), 4u);
   EXPECT_NEAR(cavity_volume(c, x), 1.0, 1e-12);
   x[4].z() = x[5].z() = x[6].z() = x[7].z() = 3;  // Taller: the cap moves with its rim.
   EXPECT_NEAR(cavity_volume(c, x), 3.0, 1e-12);

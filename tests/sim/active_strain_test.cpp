@@ -1,6 +1,6 @@
 // Muscle with fibres contracts by active strain (sim/forces.h): every spring takes the length
-// the isochoric stretch diag(1 - c, 1, 1 / (1 - c)) in (fibre, sheet, sheet normal) gives
-// its direction, so a cell of springs keeps its volume as its fibres shorten.
+// the isochoric stretch diag(1 - c, 1 - k c, 1 / ((1 - c)(1 - k c))) in (fibre, cross-fibre,
+// across the wall) gives its direction, so a cell of springs keeps its volume as its fibres shorten.
 
 #include <gtest/gtest.h>
 
@@ -26,12 +26,13 @@ TEST(ActiveStrain, EverySpringOfACellTakesTheActiveStretch) {
       const Eigen::Vector3d u = (b - a).normalized();
       sp.fibre_share.push_back(u.x() * u.x());
       sp.normal_share.push_back(u.z() * u.z());
+      sp.cross_fibre.push_back(0.6);
     }
   }
-  const double c = 0.18;
+  const double c = 0.18, k = 0.6;
   Eigen::VectorXd contraction(1);
   contraction << c;
-  const Eigen::Vector3d stretch(1 - c, 1, 1 / (1 - c));
+  const Eigen::Vector3d stretch(1 - c, 1 - k * c, 1 / ((1 - c) * (1 - k * c)));
   EXPECT_NEAR(stretch.prod(), 1.0, 1e-12);  // Isochoric.
   for (int j = 0; j < static_cast<int>(d.size()); ++j) {
     EXPECT_NEAR(driven_rest_length(sp, j, contraction), stretch.cwiseProduct(d[j]).norm(), 1e-12) << j;
@@ -49,6 +50,7 @@ TEST(ActiveStrain, WithoutFibresASpringShortensEvenly) {
   EXPECT_NEAR(driven_rest_length(sp, 1, contraction), 0.009, 1e-15);
   sp.fibre_share = {-1, -1};  // Marked as without fibres in a myocardium: the same.
   sp.normal_share = {0, 0};
+  sp.cross_fibre = {0, 0};
   EXPECT_NEAR(driven_rest_length(sp, 0, contraction), 0.008, 1e-15);
 }
 

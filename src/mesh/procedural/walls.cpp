@@ -49,7 +49,8 @@ Wall::Wall(HeartBuilder& builder, WallShape shape, const PartsAt& parts) : build
           const double helix = shape_.helix_rad(p.across, p.along);
           fibre = std::cos(helix) * circumferential + std::sin(helix) * normal.cross(circumferential);
         }
-        const int n = builder_.add_node(point(p), parts(p, false), fibre, normal, bool(shape_.helix_rad));
+        const double cross = shape_.cross_fibre ? shape_.cross_fibre(p.across, p.along) : 0.0;
+        const int n = builder_.add_node(point(p), parts(p, false), fibre, normal, cross, bool(shape_.helix_rad));
         if (first_node_ < 0) first_node_ = n;
       }
     }
@@ -268,21 +269,22 @@ std::vector<Eigen::Vector3i> Wall::lining(int from_row, int to_row) const {
 }
 
 double Wall::outside_radius_at(double height, double around) const {
-  // The outside's meridian, sampled finely; its first crossing of the plane.
-  const int samples = 400;
-  double prev_h = 0, prev_r = 0;
-  for (int i = 0; i <= samples; ++i) {
-    const double along = double(i) / samples;
-    double h, radius, thickness;
-    Eigen::Vector2d normal;
-    meridian(along, h, radius, thickness, normal);
-    const double lining = radius <= 0 ? 0.0 : lining_radius(around, along);
-    const double out_h = h + thickness * normal[1], out_r = lining + thickness * normal[0];
-    if (i > 0 && (prev_h - height) * (out_h - height) <= 0 && prev_h != out_h) {
-      const double f = (height - prev_h) / (out_h - prev_h);
-      return prev_r + f * (out_r - prev_r);
+  // The outside's meridian at `around`, sampled finely once; its first crossing of the plane.
+  if (outside_meridian_.empty()) {
+    const int samples = 400;
+    for (int i = 0; i <= samples; ++i) {
+      const double along = double(i) / samples;
+      double h, radius, thickness;
+      Eigen::Vector2d normal;
+      meridian(along, h, radius, thickness, normal);
+      const double lining = radius <= 0 ? 0.0 : lining_radius(around, along);
+      outside_meridian_.emplace_back(h + thickness * normal[1], lining + thickness * normal[0]);
     }
-    prev_h = out_h, prev_r = out_r;
+  }
+  for (std::size_t i = 1; i < outside_meridian_.size(); ++i) {
+    const auto [h0, r0] = outside_meridian_[i - 1];
+    const auto [h1, r1] = outside_meridian_[i];
+    if ((h0 - height) * (h1 - height) <= 0 && h0 != h1) return r0 + (height - h0) / (h1 - h0) * (r1 - r0);
   }
   return 0;
 }
@@ -301,7 +303,7 @@ std::optional<Eigen::Vector3i> HeartBuilder::add_triangle_facing(int a, int b, i
 int HeartBuilder::part(const std::string& name) const { return mesh_.part_index(name); }
 
 int HeartBuilder::add_node(const Vec& x, const std::vector<int>& parts, const Vec& fibre, const Vec& normal,
-                           bool active) {
+                           double cross_fibre, bool active) {
   Myocardium& m = mesh_.anatomy.myocardium;
   for (std::size_t i = 1; i < parts.size(); ++i) m.node_also_in.emplace_back(static_cast<int>(m.nodes.size()), parts[i]);
   m.nodes.push_back(x);
@@ -309,6 +311,7 @@ int HeartBuilder::add_node(const Vec& x, const std::vector<int>& parts, const Ve
   m.node_volume_m3.push_back(0);
   fibre_.push_back(fibre);
   normal_.push_back(normal);
+  cross_fibre_.push_back(cross_fibre);
   active_.push_back(active);
   return static_cast<int>(m.nodes.size()) - 1;
 }
@@ -363,6 +366,7 @@ OrganMesh HeartBuilder::finish() {
     if (!active_[a] || !active_[b] || j >= cell_springs) {
       m.fibre_share.push_back(-1);  // Passive: contracts evenly if its region is driven.
       m.normal_share.push_back(0);
+      m.cross_fibre.push_back(0);
       continue;
     }
     const Vec d = (m.nodes[b] - m.nodes[a]).normalized();
@@ -371,6 +375,7 @@ OrganMesh HeartBuilder::finish() {
     fibre = (fibre - fibre.dot(normal) * normal).normalized();  // In the wall, as at either end.
     m.fibre_share.push_back(std::pow(fibre.dot(d), 2));
     m.normal_share.push_back(std::pow(normal.dot(d), 2));
+    m.cross_fibre.push_back(0.5 * (cross_fibre_[a] + cross_fibre_[b]));
   }
   mesh_.normalize_membership();
   return std::move(mesh_);

@@ -40,6 +40,8 @@ struct WallShape {
   /// Muscle fibre helix angle from the circumferential direction at a place across and along
   /// the wall (Streeter); empty: passive tissue (no fibres, contracts evenly if driven).
   std::function<double(double across, double along)> helix_rad;
+  /// Cross-fibre shortening as a share of the fibre's, at a place across and along the wall.
+  std::function<double(double across, double along)> cross_fibre;
   int columns = 16;        ///< Lattice nodes around.
   int rows_per_key = 1;    ///< Lattice rows per meridian key interval.
   int layers = 3;          ///< Lattice cells across the wall.
@@ -83,7 +85,8 @@ class Wall {
   double lining_radius(double around, double along) const;
   const WallShape& shape() const { return shape_; }
   /// Outer radius of the wall (from its axis) in the plane at `height` on the axis, or 0
-  /// where the wall does not reach that plane (a wall of revolution: around = `around`). unit: m
+  /// where the wall does not reach that plane, along the meridian at the first `around` asked
+  /// (a wall of revolution: any will do where no bulge is). unit: m
   double outside_radius_at(double height, double around) const;
 
  private:
@@ -102,6 +105,7 @@ class Wall {
   std::vector<int> drawn_;  ///< [across][row][column] -> vertex.
   std::vector<std::vector<Eigen::Vector3i>> lining_band_;  ///< Per draw row interval.
   std::vector<Eigen::Vector3i> triangles_;
+  mutable std::vector<std::pair<double, double>> outside_meridian_;  ///< (height, radius), sampled once.
 };
 
 /// Collects the walls, the drawn surfaces and the embedded parts of the heart.
@@ -109,7 +113,8 @@ class HeartBuilder {
  public:
   explicit HeartBuilder(std::vector<std::string> part_names);
 
-  int add_node(const Vec& x, const std::vector<int>& parts, const Vec& fibre, const Vec& normal, bool active);
+  int add_node(const Vec& x, const std::vector<int>& parts, const Vec& fibre, const Vec& normal, double cross_fibre,
+               bool active);
   /// A cell's corners: its volume goes to them and every pair of them is a spring.
   void add_cell(const std::vector<int>& corners);
   /// A drawn vertex at x carried by `nodes`/`weights`, in `parts` (first part first).
@@ -131,6 +136,7 @@ class HeartBuilder {
  private:
   OrganMesh mesh_;
   std::vector<Vec> fibre_, normal_;
+  std::vector<double> cross_fibre_;
   std::vector<char> active_;
   std::vector<std::vector<int>> cells_;
   std::vector<std::pair<int, int>> glue_;
