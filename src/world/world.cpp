@@ -88,13 +88,16 @@ World build_world(const scene::Scene& scene) {
 }
 
 BodyChoice choose_body(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
+  // A generator's myocardium is the organ's full body: `body.lattice: 0` (and auto) take it.
+  if (!geometry.mesh.anatomy.empty() && (organ.body.lattice == scene::Body::kLatticeAuto || organ.body.lattice == 0)) {
+    const mesh::Myocardium& m = geometry.mesh.anatomy.myocardium;
+    return {0, true, std::string(organ.body.lattice == 0 ? "as the scene sets (body.lattice: 0)" : "auto") +
+                         ": the generated myocardium, " + std::to_string(m.nodes.size()) +
+                         " particles through the walls and " + std::to_string(m.springs.size()) +
+                         " springs along and across the muscle fibres"};
+  }
   if (organ.body.lattice != scene::Body::kLatticeAuto) {
     return {organ.body.lattice, false, "as the scene sets (body.lattice: " + std::to_string(organ.body.lattice) + ")"};
-  }
-  if (!geometry.mesh.anatomy.empty()) {
-    const mesh::Myocardium& m = geometry.mesh.anatomy.myocardium;
-    return {0, true, "auto: the generated myocardium, " + std::to_string(m.nodes.size()) + " particles through the walls and " +
-                         std::to_string(m.springs.size()) + " springs along and across the muscle fibres"};
   }
   const mesh::MeshReport& r = geometry.report;
   std::vector<std::string> why;

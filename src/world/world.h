@@ -27,8 +27,9 @@ struct OrganBody {
   std::string body_reason;       ///< Why this body (choose_body), for `validate`.
 };
 
-/// The body an organ gets: the scene's `body.lattice` when it gives a number; for `auto`,
-/// the generator's myocardium when the mesh has one (the anatomical heart), else a lattice of kAutoLattice voxels for a mesh file that is open, in several pieces or over
+/// The body an organ gets: the generator's myocardium when the mesh has one (the anatomical
+/// heart) and `body.lattice` is auto or 0 (it is that organ's full body); else the scene's
+/// `body.lattice` when it gives a number; for `auto`, a lattice of kAutoLattice voxels for a mesh file that is open, in several pieces or over
 /// kAutoLatticeVertices vertices (an atlas organ of many overlapping open parts: one
 /// volumetric body moves them together and costs what its voxels cost, not its triangles),
 /// else the full model (every vertex a particle: accurate on a closed surface).
