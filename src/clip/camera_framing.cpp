@@ -6,6 +6,7 @@
 #include <string>
 
 #include "clip/camera_motion.h"
+#include "clip/sections.h"
 #include "common/error.h"
 #include "render/camera_matrices.h"
 
@@ -97,6 +98,9 @@ scene::Scene with_cameras_placed(scene::Scene scene, const world::World& world) 
   const double aspect = double(scene.output.width) / scene.output.height;
   place(scene.camera, bounding_sphere(world, shown_organs(scene, {})), aspect);
   const auto rects = scene::view_rectangles(scene.output.width, scene.output.height, static_cast<int>(scene.views.size()));
+  std::vector<double> aspects;
+  for (const auto& r : rects) aspects.push_back(double(r.width) / r.height);
+  place_sections(scene, world, aspects);
   for (std::size_t v = 0; v < scene.views.size(); ++v) {
     scene::View& view = scene.views[v];
     if (view.has_camera) {

@@ -18,7 +18,8 @@ render::BoundingSphere bounding_sphere(const world::World& world, const std::vec
 /// `scene` with every automatic camera (scene::Camera::automatic: the scene's and each
 /// view's) placed: looking along -z at the centre of the bounding sphere of the organs it
 /// shows (at rest), from where that sphere fills camera.fill of the view's smaller angle of
-/// view. So a 1 cm organ and a 1 m organ fill the frame alike.
+/// view. So a 1 cm organ and a 1 m organ fill the frame alike. Named sections of the
+/// anatomical heart are placed first (clip/sections.h).
 scene::Scene with_cameras_placed(scene::Scene scene, const world::World& world);
 
 /// Throws Error(kDataError) when no organ covers a pixel of the clip's first frame in any

@@ -81,8 +81,16 @@ struct Material {
 
 /// A plane that cuts an organ open: the side dot(x - point, normal) < 0 is removed, and the
 /// inside seen through the cut is drawn flat in cut_color.
+/// A named plane of the anatomical heart (clip/sections.h places it from the heart's landmarks).
+enum class Section {
+  kNone,         ///< The plane is given by point and normal.
+  kFourChamber,  ///< Through the long axis and both ventricles (the apical four-chamber view).
+  kShortAxis,    ///< Across the long axis, mid-ventricle (the parasternal short-axis view).
+};
+
 struct ClipPlane {
   bool enabled = false;
+  Section section = Section::kNone;
   Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  ///< A point on the plane, world space. unit: m
   Eigen::Vector3d normal = -Eigen::Vector3d::UnitZ();  ///< Points to the side kept (normalised). unit: 1
   Color cut_color = Color(0.93, 0.78, 0.62);           ///< sRGB of the cut face.

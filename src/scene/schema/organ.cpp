@@ -416,11 +416,24 @@ ValueSpec<ClipPlane> clip_spec() {
           field("point", vec3(Dimension::kLength), &ClipPlane::point_m, "A point on the cutting plane (world space)."),
           field("normal", direction(), &ClipPlane::normal,
                 "Points to the side kept; the other side is cut away (normalised on reading).")
-              .required(),
+              .shown_default("required without `section`"),
+          field("section",
+                choice<Section>({{"four_chamber", Section::kFourChamber}, {"short_axis", Section::kShortAxis}}),
+                &ClipPlane::section,
+                "A named plane of the anatomical heart instead of point and normal: `four_chamber` (through the long "
+                "axis and both ventricles, the front half cut away) or `short_axis` (across the long axis mid-ventricle, "
+                "the apical half cut away). A view with this clip and no camera position looks square at the cut.")
+              .shown_default("none"),
           field("cut_color", color(), &ClipPlane::cut_color, "Flat colour of the inside seen through the cut (sRGB)."),
       },
-      [](const Node&, ClipPlane& c, const std::string&, const Context&) {
+      [](const Node& node, ClipPlane& c, const std::string& path, const Context&) {
         c.enabled = true;
+        const bool has_section = node.find("section") != nullptr;
+        const bool has_plane = node.find("normal") != nullptr || node.find("point") != nullptr;
+        if (has_section == has_plane || (!has_section && node.find("normal") == nullptr))
+          fail(node.origin, path,
+               std::string("expected `section`, or `normal` (with `point`); got ") +
+                   (has_section ? "both" : node.find("point") ? "a point without a normal" : "neither"));
         c.normal.normalize();
       });
 }
