@@ -25,13 +25,8 @@ std::vector<std::size_t> shown_organs(const scene::Scene& scene, const std::vect
 
 void place(scene::Camera& camera, const render::BoundingSphere& sphere, double aspect) {
   if (!camera.automatic) return;
-  // The smaller of the vertical and horizontal angles of view decides what fits.
-  const double vertical = camera.fov_rad;
-  const double horizontal = 2 * std::atan(std::tan(vertical / 2) * aspect);
-  const double half_angle = 0.5 * camera.fill * std::min(vertical, horizontal);
-  const double radius = std::max(sphere.radius, 1e-6);
   camera.target_m = sphere.center;
-  camera.position_m = sphere.center + Eigen::Vector3d(0, 0, radius / std::sin(half_angle));
+  camera.position_m = sphere.center + Eigen::Vector3d(0, 0, framing_distance(camera, sphere, aspect));
 }
 
 std::string point_text(const Eigen::Vector3d& p) {
@@ -77,6 +72,14 @@ std::string why_not_seen(const world::OrganBody& body, const Eigen::Vector3d& ce
 }
 
 }  // namespace
+
+double framing_distance(const scene::Camera& camera, const render::BoundingSphere& sphere, double aspect) {
+  // The smaller of the vertical and horizontal angles of view decides what fits.
+  const double vertical = camera.fov_rad;
+  const double horizontal = 2 * std::atan(std::tan(vertical / 2) * aspect);
+  const double half_angle = 0.5 * camera.fill * std::min(vertical, horizontal);
+  return std::max(sphere.radius, 1e-6) / std::sin(half_angle);
+}
 
 render::BoundingSphere bounding_sphere(const world::World& world, const std::vector<std::size_t>& organs) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;

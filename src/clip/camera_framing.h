@@ -13,6 +13,10 @@ namespace systole::clip {
 
 /// The organs' rest surfaces: their bounding box's centre, and the radius about it that
 /// holds them all.
+/// How far from the centre of `sphere` `camera` must stand for the sphere to fill
+/// camera.fill of the smaller angle of view of a view `aspect` wide over high. unit: m
+double framing_distance(const scene::Camera& camera, const render::BoundingSphere& sphere, double aspect);
+
 render::BoundingSphere bounding_sphere(const world::World& world, const std::vector<std::size_t>& organs);
 
 /// `scene` with every automatic camera (scene::Camera::automatic: the scene's and each

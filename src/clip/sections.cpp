@@ -95,11 +95,9 @@ void place_sections(scene::Scene& scene, const world::World& world, const std::v
     if (own_position) continue;
     scene::Camera camera = view.has_camera ? view.camera : scene.camera;
     const render::BoundingSphere sphere = bounding_sphere(world, {static_cast<std::size_t>(o)});
-    const double vertical = camera.fov_rad, horizontal = 2 * std::atan(std::tan(vertical / 2) * aspect[v]);
-    const double half_angle = 0.5 * camera.fill * std::min(vertical, horizontal);
     const Eigen::Vector3d& n = view.clip.normal;
     camera.target_m = sphere.center - (sphere.center - view.clip.point_m).dot(n) * n;  // In the cut.
-    camera.position_m = camera.target_m - n * (std::max(sphere.radius, 1e-6) / std::sin(half_angle));
+    camera.position_m = camera.target_m - n * framing_distance(camera, sphere, aspect[v]);
     camera.up = up.normalized();
     camera.automatic = false;
     camera.orbit.enabled = false;

@@ -100,7 +100,7 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
     sim::embed(body.embedding, body.state.x, x);
     shapes.push_back(x);
     std::vector<double> v;
-    for (const auto& cavity : anatomy.cavities) v.push_back(mesh::cavity_volume(cavity, x) / kMl);
+    for (double m3 : body.valves.volume_m3) v.push_back(m3 / kMl);  // Measured by the valves this frame.
     volumes.push_back(std::move(v));
     std::vector<double> o;
     for (const auto& valve : body.valves.valves) o.push_back(valve.opening);

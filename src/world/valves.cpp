@@ -8,7 +8,7 @@ ValveMotion valve_motion(const mesh::Anatomy& anatomy, const std::vector<Eigen::
   ValveMotion motion;
   motion.cavities = anatomy.cavities;
   for (const mesh::Cavity& cavity : motion.cavities) motion.rest_volume_m3.push_back(mesh::cavity_volume(cavity, rest_positions));
-  motion.last_volume_m3 = motion.rest_volume_m3;
+  motion.volume_m3 = motion.previous_volume_m3 = motion.rest_volume_m3;
   for (const mesh::Valve& valve : anatomy.valves) {
     ValveMotion::Leaflets leaflets;
     leaflets.vertices = valve.vertices;
@@ -26,17 +26,16 @@ ValveMotion valve_motion(const mesh::Anatomy& anatomy, const std::vector<Eigen::
 }
 
 void update_valves(ValveMotion& motion, const Eigen::Matrix3Xd& positions, double frame_s) {
-  std::vector<double> volume(motion.cavities.size());
-  for (std::size_t c = 0; c < motion.cavities.size(); ++c) volume[c] = mesh::cavity_volume(motion.cavities[c], positions);
+  motion.previous_volume_m3.swap(motion.volume_m3);
+  for (std::size_t c = 0; c < motion.cavities.size(); ++c) motion.volume_m3[c] = mesh::cavity_volume(motion.cavities[c], positions);
   for (ValveMotion::Leaflets& valve : motion.valves) {
     if (valve.cavity < 0) continue;
     const double full = 0.5 * motion.rest_volume_m3[valve.cavity];  // m^3/s
-    const double flow = (volume[valve.cavity] - motion.last_volume_m3[valve.cavity]) / frame_s;
+    const double flow = (motion.volume_m3[valve.cavity] - motion.previous_volume_m3[valve.cavity]) / frame_s;
     const double through = valve.inflow ? flow : -flow;
     const double x = std::clamp((through - 0.05 * full) / (0.95 * full), 0.0, 1.0);
     valve.opening = motion.measured ? x * x * (3 - 2 * x) : 0.0;
   }
-  motion.last_volume_m3 = volume;
   motion.measured = true;
 }
 

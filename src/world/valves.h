@@ -21,7 +21,9 @@ struct ValveMotion {
   };
   std::vector<mesh::Cavity> cavities;
   std::vector<Leaflets> valves;
-  std::vector<double> rest_volume_m3, last_volume_m3;  ///< Per cavity. unit: m^3
+  std::vector<double> rest_volume_m3;  ///< Per cavity. unit: m^3
+  /// Per cavity, at the last update and the one before it. unit: m^3
+  std::vector<double> volume_m3, previous_volume_m3;
   bool measured = false;
 
   bool empty() const { return valves.empty(); }

@@ -130,13 +130,15 @@ void advance_to_frame(World& w, int frame) {
           << *problem << ". Remedy: " << sim::divergence_remedy(body.model) << ".";
         throw Error(ExitCode::kDiverged, m.str());
       }
-      if (!body.valves.empty()) {
+      const bool folds_due = body.folds.due(body.state.time_s);
+      // A full model's particles are its render vertices; a lattice's are embedded first,
+      // once for the valves (which measure it with the leaflets closed) and the watch.
+      if (!body.embedding.empty() && (folds_due || !body.valves.empty())) {
         sim::embed(body.embedding, body.state.x, w.scratch_positions);
-        update_valves(body.valves, w.scratch_positions, w.frame_s);
+        if (!body.valves.empty()) update_valves(body.valves, w.scratch_positions, w.frame_s);
+        open_valves(body.valves, w.scratch_positions);
       }
-      if (!body.folds.due(body.state.time_s)) continue;
-      // A full model's particles are its render vertices; a lattice's are embedded first.
-      if (!body.embedding.empty()) render_positions(body, w.scratch_positions);
+      if (!folds_due) continue;
       const Eigen::Matrix3Xd& surface = body.embedding.empty() ? body.state.x : w.scratch_positions;
       if (auto crumpled = body.folds.update(surface, body.state.time_s)) {
         std::ostringstream m;
