@@ -37,7 +37,15 @@ void run_export(const ExportRequest& request) {
   }
   if (!loop_files.empty()) {
     const auto scene = load_loop(request.scene, request.defines);
-    const auto rec = exporter::record(scene, request.from_bake);
+    exporter::Recording rec;
+    try {
+      rec = exporter::record(scene, request.from_bake);
+    } catch (const Error& e) {
+      if (request.from_bake.empty() || e.code() != ExitCode::kDataError) throw;
+      throw Error(e.code(), std::string(e.what()) +
+                                "\n(a compact glTF from a bake needs a bake of the loop: systole bake SCENE -D "
+                                "output.loop=true -D 'output.duration=1 ms'; or export every frame: --encoding frames)");
+    }
     for (const auto& file : loop_files) std::cout << exporter::export_file(file, rec, options) << std::endl;
   }
   if (!clip_files.empty()) {
