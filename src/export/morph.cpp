@@ -35,6 +35,30 @@ Eigen::Matrix3Xf normalized_columns(const Eigen::Matrix3Xd& v) {
   return out;
 }
 
+/// The principal components of the columns of d (displacements from their mean), largest
+/// first, by the snapshot method: the Gram matrix is frames x frames, small beside 3n x 3n.
+/// Each eigenvector's sign is fixed (largest entry positive) so the bytes do not depend on
+/// what the solver happened to return; components without variance are left out.
+struct Components {
+  std::vector<Eigen::VectorXd> vectors;  ///< Over the frames, unit length.
+  std::vector<double> values;            ///< Their eigenvalues (squared singular values). unit: m^2
+};
+Components principal_components(const Eigen::MatrixXd& d) {
+  const Eigen::MatrixXd gram = d.transpose() * d;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
+  Components out;
+  for (Eigen::Index i = gram.rows() - 1; i >= 0; --i) {
+    if (!(eigen.eigenvalues()(i) > 0)) break;
+    Eigen::VectorXd e = eigen.eigenvectors().col(i);
+    Eigen::Index at = 0;
+    e.cwiseAbs().maxCoeff(&at);
+    if (e(at) < 0) e = -e;
+    out.vectors.push_back(e);
+    out.values.push_back(eigen.eigenvalues()(i));
+  }
+  return out;
+}
+
 }  // namespace
 
 Eigen::Matrix3Xf vertex_normals(const OrganTrack& organ, const Eigen::Matrix3Xd& positions_m) {
@@ -86,22 +110,9 @@ MorphAnimation compact_morph(const OrganTrack& organ, const Recording& rec, cons
   for (int f = 0; f < frames; ++f) d.col(f) = organ.frames_m[static_cast<std::size_t>(f)].reshaped();
   const Eigen::VectorXd mean = d.rowwise().mean();
   d.colwise() -= mean;
-  // Snapshot PCA: the Gram matrix is frames x frames, small beside 3n x 3n.
-  const Eigen::MatrixXd gram = d.transpose() * d;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
-  // Largest first; each eigenvector's sign fixed (largest entry positive) so the bytes do
-  // not depend on what the solver happened to return.
-  std::vector<Eigen::VectorXd> v;
-  std::vector<double> lambda;
-  for (Eigen::Index i = frames - 1; i >= 0; --i) {
-    if (!(eigen.eigenvalues()(i) > 0)) break;
-    Eigen::VectorXd e = eigen.eigenvectors().col(i);
-    Eigen::Index at = 0;
-    e.cwiseAbs().maxCoeff(&at);
-    if (e(at) < 0) e = -e;
-    v.push_back(e);
-    lambda.push_back(eigen.eigenvalues()(i));
-  }
+  const Components pca = principal_components(d);
+  const auto& v = pca.vectors;
+  const auto& lambda = pca.values;
   // Normals: a shared unit base, and per component the least-squares fit of the normal
   // changes to its weight curve (the curves are orthogonal, so each fits alone).
   Eigen::MatrixXd normal_change(n3, frames);
