@@ -19,7 +19,8 @@ set(SYSTOLE_MODULES
   "clip:common,scene,mesh,sim,world,chart,plot,render,encode,overlay"
   "batch:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,clip"
   "study:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,clip"
-  "cli:common,scene,mesh,sim,world,train,chart,plot,render,encode,overlay,clip,batch,study")
+  "export:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,clip"
+  "cli:common,scene,mesh,sim,world,train,chart,plot,render,encode,overlay,clip,batch,study,export")
 
 # The one place the simulator meets the scene: the translation of a scene into sim's own
 # parameter structs. No other file under src/sim/ may include scene/.
@@ -33,7 +34,8 @@ set(SYSTOLE_EXTERNAL
   "Freetype::Freetype:plot"
   "yaml-cpp:scene"
   "assimp::assimp:mesh"
-  "meshoptimizer::meshoptimizer:mesh")
+  "meshoptimizer::meshoptimizer:mesh"
+  "TinyGLTF::TinyGLTF:export")
 
 # allowed = the modules `module` may use (empty list for common); known = FALSE if not listed.
 function(systole_allowed_modules module out_allowed out_known)

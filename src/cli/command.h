@@ -3,6 +3,7 @@
 // its own file (render_command.cpp, ...) so commands grow without touching each other.
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -24,6 +25,21 @@ Command add_bake_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_tune_command(CLI::App& app);
 Command add_motion_command(CLI::App& app);
+Command add_export_command(CLI::App& app);
+
+/// What `systole export` (and `render --export`) is asked to write.
+struct ExportRequest {
+  std::string scene;
+  std::vector<std::filesystem::path> outputs;  ///< Format by extension (export/exporter.h).
+  std::string encoding = "compact", max_error = "2%", from_bake;
+  std::vector<std::string> defines;
+  bool html = false;
+};
+/// Records the scene (or reads the bake) once per kind of recording the outputs need and
+/// writes each output, printing its report on stdout (export_command.cpp).
+void run_export(const ExportRequest& request);
+/// Adds --encoding and --max-error.
+void add_export_options(CLI::App& command, ExportRequest& request);
 
 /// Adds the repeatable `-D key.path=value` option every scene-reading command takes.
 void add_define_option(CLI::App& command, std::vector<std::string>& defines);

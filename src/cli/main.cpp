@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
       systole::cli::add_bench_command(app),
       systole::cli::add_tune_command(app),
       systole::cli::add_motion_command(app),
+      systole::cli::add_export_command(app),
   };
 
   try {

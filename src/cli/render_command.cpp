@@ -37,6 +37,8 @@ struct RenderArgs {
   std::vector<std::string> scenes;
   std::string output, png_dir, frames, from_bake, shard, progress;
   std::vector<std::string> defines;
+  std::vector<std::filesystem::path> exports;  ///< --export: the animation itself beside the video.
+  ExportRequest export_request;                ///< Its --encoding and --max-error.
   bool no_video = false, allow_large = false, force = false, dry_run = false;
   int jobs = 1;
 };
@@ -82,6 +84,10 @@ int run_render(const RenderArgs& o) {
     std::cerr << "shard " << shard.index << "/" << shard.count << " (" << shard.source << "): " << jobs.size()
               << " of " << all.size() << " jobs\n";
   }
+  if (!o.exports.empty() && all.size() != 1) {
+    throw Error(ExitCode::kUsage, "--export writes one scene's animation; this render has " + std::to_string(all.size()) +
+                                      " jobs (export each with systole export)");
+  }
   if (o.dry_run) {
     print_plan(jobs, options);
     return 0;
@@ -97,6 +103,16 @@ int run_render(const RenderArgs& o) {
   if (options.several) std::cerr << batch::summary_table(results);
   const int code = batch::batch_exit_code(results);
   if (code != 0 && !options.several) throw Error(static_cast<ExitCode>(code), results[0].error);
+  if (code == 0 && !o.exports.empty() && !jobs.empty()) {
+    // After the video: the export simulates the clip again (or reads the same bake); the
+    // video's frame loop stays as it is.
+    ExportRequest request = o.export_request;
+    request.scene = jobs.front().scene.string();
+    request.defines = jobs.front().overrides;
+    request.outputs = o.exports;
+    request.from_bake = o.from_bake;
+    run_export(request);
+  }
   return code;
 }
 
@@ -128,6 +144,10 @@ Command add_render_command(CLI::App& app) {
   add_progress_option(*cmd, o->progress);
   add_define_option(*cmd, o->defines);
   add_allow_large_flag(*cmd, o->allow_large);
+  cmd->add_option("--export", o->exports,
+                  "Also export the animation itself (repeatable; .glb, .gltf, .pc2, .mdd, .pvd, .usda, .html: "
+                  "systole export)");
+  add_export_options(*cmd, o->export_request);
 
   return {cmd, [o] { return run_render(*o); }};
 }

@@ -1,0 +1,136 @@
+// ctest-labels: slow-under-sanitizers
+// `systole export` end to end: the frames encoding holds the simulated positions (as a bake
+// stores them at full precision) to float32 rounding, the compact loop reports its error
+// within the budget, a scene that cannot loop is refused with the reason, and a failed
+// export leaves no file behind.
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <regex>
+#include <tiny_gltf.h>
+
+#include "clip/bake.h"
+#include "support/run.h"
+
+namespace systole::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kHeart = source("scenes/heart.yaml");
+const std::string kShort = " -D 'output.duration=0.4 s' ";
+
+tinygltf::Model load_glb(const fs::path& file) {
+  tinygltf::TinyGLTF loader;
+  tinygltf::Model model;
+  std::string err, warn;
+  // From memory: Debian's libtinygltf crashes reading a file itself (its default file
+  // callbacks), and reading from memory is what the other tests do.
+  const std::string bytes = read_file(file);
+  EXPECT_TRUE(loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                          static_cast<unsigned>(bytes.size())))
+      << err;
+  return model;
+}
+
+Eigen::Matrix3Xd positions(const tinygltf::Model& m, int accessor) {
+  const auto& a = m.accessors[static_cast<std::size_t>(accessor)];
+  const auto& view = m.bufferViews[static_cast<std::size_t>(a.bufferView)];
+  Eigen::Matrix3Xf x(3, static_cast<Eigen::Index>(a.count));
+  std::memcpy(x.data(), m.buffers[0].data.data() + view.byteOffset + a.byteOffset, sizeof(float) * 3 * a.count);
+  return x.cast<double>();
+}
+
+/// Only the given names in `dir` (no temporaries, no locks, no partial output).
+std::vector<std::string> listing(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(ExportCommand, EveryFrameAsAMorphTargetIsTheSimulationToFloatRounding) {
+  const auto dir = scratch("export_frames");
+  auto r = run(systole() + " bake " + kHeart + kShort + "-o " + (dir / "h.bake").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run(systole() + " export " + kHeart + kShort + "--encoding frames -o " + (dir / "h.glb").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("every frame a morph target, 12 frames"), std::string::npos) << r.output;
+  const auto m = load_glb(dir / "h.glb");
+  clip::BakeReader bake(dir / "h.bake");
+  const auto& prim = m.meshes.at(0).primitives.at(0);
+  ASSERT_EQ(prim.targets.size(), std::size_t(bake.info().frame_count));
+  const Eigen::Matrix3Xd base = positions(m, prim.attributes.at("POSITION"));
+  Eigen::Matrix3Xd simulated;
+  double worst = 0, moved = 0;
+  for (int f = 0; f < bake.info().frame_count; ++f) {
+    bake.read(f, 0, simulated);
+    const Eigen::Matrix3Xd shown = base + positions(m, prim.targets[static_cast<std::size_t>(f)].at("POSITION"));
+    worst = std::max(worst, (shown - simulated).cwiseAbs().maxCoeff());
+    if (f > 0) {
+      Eigen::Matrix3Xd first;
+      bake.read(0, 0, first);
+      moved = std::max(moved, (simulated - first).cwiseAbs().maxCoeff());
+    }
+  }
+  // The heart is under 10 cm across: two float32 roundings are below 1e-8 m.
+  EXPECT_LT(worst, 2e-8) << "max coordinate difference from the simulation, m";
+  EXPECT_GT(moved, 1e-4) << "the heart moves, so a wrong frame would show";
+  // From the bake, the same bytes.
+  r = run(systole() + " export " + kHeart + kShort + "--encoding frames --from-bake " + (dir / "h.bake").string() +
+          " -o " + (dir / "b.glb").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read_file(dir / "b.glb"), read_file(dir / "h.glb"));
+}
+
+TEST(ExportCommand, TheCompactLoopReportsItsErrorWithinTheBudget) {
+  const auto dir = scratch("export_compact");
+  const auto r = run(systole() + " export " + kHeart + " -o " + (dir / "h.glb").string() + " --max-error 2%");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.output, m, std::regex(R"(heart: (\d+) morph targets, error ([0-9.e+-]+) %)"))) << r.output;
+  EXPECT_GE(std::stoi(m[1]), 4);
+  EXPECT_LE(std::stoi(m[1]), 16);
+  EXPECT_LE(std::stod(m[2]), 2.0);
+  EXPECT_LT(fs::file_size(dir / "h.glb"), 2'000'000u);
+  const auto model = load_glb(dir / "h.glb");
+  ASSERT_EQ(model.animations.size(), 1u);
+  EXPECT_EQ(listing(dir), std::vector<std::string>{"h.glb"}) << "no lock or temporary left";
+}
+
+TEST(ExportCommand, AnIrregularRhythmCannotLoopAndSaysWhy) {
+  const auto dir = scratch("export_afib");
+  const auto r = run(systole() + " export " + source("scenes/heart-afib.yaml") + " -o " + (dir / "a.glb").string());
+  EXPECT_EQ(r.exit_code, 65) << r.output;
+  EXPECT_NE(r.output.find("irregular rhythm never repeats"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--encoding frames"), std::string::npos) << r.output;
+  EXPECT_TRUE(listing(dir).empty());
+}
+
+TEST(ExportCommand, AFailedExportLeavesNothingBehind) {
+  const auto dir = scratch("export_fails");
+  // An extension no format has: refused before anything is simulated.
+  auto r = run(systole() + " export " + kHeart + " -o " + (dir / "h.fbx").string());
+  EXPECT_EQ(r.exit_code, 64) << r.output;
+  EXPECT_NE(r.output.find(".glb, .gltf"), std::string::npos) << r.output;
+  // A budget no 16 targets meet: fails after simulating, and writes nothing.
+  r = run(systole() + " export " + kHeart + " --max-error 0.001% -o " + (dir / "h.glb").string());
+  EXPECT_EQ(r.exit_code, 65) << r.output;
+  EXPECT_NE(r.output.find("over the budget"), std::string::npos) << r.output;
+  EXPECT_TRUE(listing(dir).empty()) << listing(dir).size() << " files left";
+}
+
+TEST(ExportCommand, RenderWritesTheAnimationBesideTheVideo) {
+  const auto dir = scratch("render_export");
+  const auto r = run(systole() + " render " + kHeart + kShort +
+                     "-D output.width=64 -D output.height=48 -o " + (dir / "h.mp4").string() + " --export " +
+                     (dir / "h.pc2").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "h.mp4"));
+  EXPECT_TRUE(fs::exists(dir / "h.pc2"));
+  EXPECT_TRUE(fs::exists(dir / "h.obj"));
+}
+
+}  // namespace
+}  // namespace systole::test
