@@ -65,6 +65,11 @@ struct VentricleLandmarks {
   int apex = -1;                          ///< Epicardial apex.
   std::vector<int> annulus;               ///< The mitral annulus (lining ring).
   std::vector<std::pair<int, int>> wall;  ///< Mid-ventricular (lining, epicardium) pairs across the wall.
+  /// Per wall pair: its mid-ventricular segment of the American Heart Association's 17
+  /// (Cerqueira et al. 2002, Circulation 105:539): 7 anterior, 8 anteroseptal, 9
+  /// inferoseptal, 10 inferior, 11 inferolateral, 12 anterolateral, 60 deg each, the septum
+  /// between 8 and 9.
+  std::vector<int> wall_segment;
   std::vector<int> apical_ring, basal_ring;  ///< Epicardial rings for the twist.
 };
 

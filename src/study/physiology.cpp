@@ -41,6 +41,26 @@ double muscle_volume(const std::vector<Eigen::Vector3i>& triangles, const Eigen:
   return six / 6;
 }
 
+constexpr const char* kMidSegmentNames[6] = {"anterior", "anteroseptal", "inferoseptal", "inferior", "inferolateral", "anterolateral"};
+
+// Each mid-ventricular segment's thickening from end-diastole to end-systole: the mean
+// lining-to-epicardium distance of its pairs, as echocardiography scores regional motion.
+std::vector<SegmentThickening> segment_thickening(const mesh::VentricleLandmarks& lv, const Eigen::Matrix3Xd& diastole,
+                                                  const Eigen::Matrix3Xd& systole) {
+  std::vector<SegmentThickening> out;
+  for (int segment = 7; segment <= 12; ++segment) {
+    double before = 0, after = 0;
+    for (std::size_t i = 0; i < lv.wall.size(); ++i) {
+      if (lv.wall_segment[i] != segment) continue;
+      const auto [inner, outer] = lv.wall[i];
+      before += (diastole.col(outer) - diastole.col(inner)).norm();
+      after += (systole.col(outer) - systole.col(inner)).norm();
+    }
+    if (before > 0) out.push_back({segment, kMidSegmentNames[segment - 7], 100 * (after / before - 1)});
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::string> PhysiologyReport::outside_normal() const {
@@ -139,6 +159,7 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   };
   report.long_axis_shortening_pct = 100 * (1 - long_axis(shapes[es]) / long_axis(shapes[ed]));
   report.wall_thickening_pct = 100 * (thickness(shapes[es]) / thickness(shapes[ed]) - 1);
+  report.segments = segment_thickening(lv, shapes[ed], shapes[es]);
   // Twist: apical minus basal rotation from end-diastole, at its peak over the beat.
   const double to_deg = 180 / std::numbers::pi;
   report.twist_deg = -HUGE_VAL;
@@ -197,6 +218,12 @@ std::string physiology_text(const PhysiologyReport& r) {
   figure("ejection fraction", r.ejection_fraction_pct, "%", kEjectionFraction);
   figure("long-axis shortening", r.long_axis_shortening_pct, "%", kLongAxisShortening);
   figure("wall thickening", r.wall_thickening_pct, "%", kWallThickening);
+  out += "    mid-ventricular segments' thickening (AHA 7-12; below 10 % akinetic):";
+  for (const auto& seg : r.segments) {
+    std::snprintf(line, sizeof line, " %s %.0f %%%s", seg.name, seg.thickening_pct, seg.akinetic() ? " (akinetic)" : "");
+    out += line;
+  }
+  out += "\n";
   figure("twist", r.twist_deg, "deg", kTwist);
   std::snprintf(line, sizeof line, "    (apex %+.1f deg, base %+.1f deg, anticlockwise seen from the apex; end-systole %.0f ms after activation)\n",
                 r.apical_rotation_deg, r.basal_rotation_deg, r.end_systole_ms);

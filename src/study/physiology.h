@@ -38,6 +38,19 @@ struct ChamberVolume {
   double emptied_pct() const { return largest_ml > 0 ? 100 * (largest_ml - smallest_ml) / largest_ml : 0; }
 };
 
+/// Below this a segment's systolic thickening is negligible: the segment is akinetic, as a
+/// scar is (Lang et al. 2015, "Regional LV function": akinesis is absent or negligible
+/// thickening; 10 % is our threshold for negligible).
+inline constexpr double kAkineticThickeningPct = 10;
+
+/// Systolic thickening of one mid-ventricular segment (AHA 7-12, mesh/anatomy.h).
+struct SegmentThickening {
+  int segment = 0;           ///< 7 anterior ... 12 anterolateral.
+  const char* name = "";
+  double thickening_pct = 0;
+  bool akinetic() const { return thickening_pct < kAkineticThickeningPct; }
+};
+
 struct ValveEvent {
   std::string valve;  ///< "mitral_valve"
   bool opens = true;  ///< Opens, or closes.
@@ -54,6 +67,7 @@ struct PhysiologyReport {
   double end_systole_ms = 0;         ///< When the left ventricle is smallest, after activation. unit: ms
   double long_axis_shortening_pct = 0;
   double wall_thickening_pct = 0;
+  std::vector<SegmentThickening> segments;  ///< Mid-ventricular, AHA order 7-12.
   double apical_rotation_deg = 0, basal_rotation_deg = 0, twist_deg = 0;  ///< At peak twist; anticlockwise seen from the apex positive.
   double muscle_volume_change_pct = 0;  ///< Largest change of the myocardium's volume over the beat.
   std::vector<ValveEvent> valve_events;

@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "common/error.h"
+#include "mesh/procedural/organs.h"
 #include "study/physiology.h"
 
 namespace systole::study {
@@ -85,6 +86,54 @@ TEST(Physiology, AtEndSystoleTheAorticValveClosesAndTheMitralOpens) {
   EXPECT_NEAR(mitral_opens, r.end_systole_ms, 1.5 * frame_ms);
   EXPECT_GT(r.end_systole_ms, 100);  // After the contraction has built up,
   EXPECT_LT(r.end_systole_ms, 400);  // within its systole (0.36 of 833 ms).
+}
+
+const SegmentThickening& segment(const PhysiologyReport& r, int aha) {
+  for (const auto& s : r.segments) {
+    if (s.segment == aha) return s;
+  }
+  throw std::runtime_error("no segment " + std::to_string(aha));
+}
+
+// A scar on the anterolateral wall: a sphere round that segment's mid-wall, listed after the
+// ventricles so it takes their particles, with no drive (it does not contract) and ten
+// times stiffer (fibrous), as scenes/heart-infarct.yaml does on the solid heart.
+scene::Scene with_anterolateral_infarct(scene::Scene s) {
+  const mesh::OrganMesh heart = mesh::procedural::anatomical_heart(s.organs[0].mesh.detail);
+  const mesh::VentricleLandmarks& lv = heart.anatomy.left_ventricle;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (std::size_t i = 0; i < lv.wall.size(); ++i) {
+    if (lv.wall_segment[i] != 12) continue;
+    centre += 0.5 * (heart.surface.positions[lv.wall[i].first] + heart.surface.positions[lv.wall[i].second]);
+    ++n;
+  }
+  scene::Region scar;
+  scar.name = "infarct";
+  scene::Selector sphere;
+  sphere.kind = scene::SelectorKind::kSphere;
+  sphere.center = centre / n;
+  sphere.radius_m = 0.025;
+  scar.select.push_back(sphere);
+  scar.stiffness_scale = 10;
+  s.organs[0].regions.insert(s.organs[0].regions.begin() + 5, scar);
+  return s;
+}
+
+TEST(Physiology, EverySegmentOfANormalHeartThickens) {
+  const PhysiologyReport r = measure_physiology(anatomical_heart(0.22), 1);
+  ASSERT_EQ(r.segments.size(), 6u);
+  for (const auto& s : r.segments) EXPECT_FALSE(s.akinetic()) << s.name << " " << s.thickening_pct << " %";
+}
+
+TEST(Physiology, AnInfarctedSegmentDoesNotThickenAndTheEjectionFractionFalls) {
+  // Textbook infarct (Lang 2015, regional function): the scar is akinetic, the remote wall
+  // still thickens, and the ejection fraction falls.
+  const PhysiologyReport normal = measure_physiology(anatomical_heart(0.22), 1);
+  const PhysiologyReport infarct = measure_physiology(with_anterolateral_infarct(anatomical_heart(0.22)), 1);
+  EXPECT_TRUE(segment(infarct, 12).akinetic()) << segment(infarct, 12).thickening_pct << " %";
+  EXPECT_FALSE(segment(infarct, 9).akinetic()) << segment(infarct, 9).thickening_pct << " %";  // Remote: inferoseptal.
+  EXPECT_LT(infarct.ejection_fraction_pct, normal.ejection_fraction_pct - 5);
 }
 
 TEST(Physiology, RefusesAnOrganWithoutAnatomy) {

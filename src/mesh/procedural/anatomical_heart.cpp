@@ -349,9 +349,16 @@ void Heart::add_cavities_and_landmarks(const Wall& left, const Wall& right) {
   const int per_key = left.shape().draw_rows_per_key, columns = left.draw_columns();
   lv.apex = left.drawn(1, 0, 0);
   const int annulus = left.draw_row_of_key(kAnnulusKey), middle = (3 * per_key + 4 * per_key) / 2;
+  // Segments go round from the septum's middle (around 0: towards the right heart) through
+  // the anterior wall, whichever way round that is in the wall's frame.
+  const double to_anterior = layout_.anterior.dot(left.shape().e2) >= 0 ? 1.0 : -1.0;
   for (int c = 0; c < columns; ++c) {
     lv.annulus.push_back(left.drawn(0, annulus, c));
     lv.wall.emplace_back(left.drawn(0, middle, c), left.drawn(1, middle, c));
+    double from_septum = to_anterior * 2 * kPi * c / columns;
+    from_septum -= 2 * kPi * std::floor(from_septum / (2 * kPi));
+    constexpr int kSegmentFromSeptum[6] = {8, 7, 12, 11, 10, 9};
+    lv.wall_segment.push_back(kSegmentFromSeptum[std::min(5, static_cast<int>(from_septum / (kPi / 3)))]);
     lv.apical_ring.push_back(left.drawn(1, 2 * per_key, c));
     lv.basal_ring.push_back(left.drawn(1, 5 * per_key, c));
   }
