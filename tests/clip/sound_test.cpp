@@ -38,7 +38,7 @@ std::string small_heart(const std::string& output, const std::string& extra) {
 const std::string kTracks =
     "audio: {heart: {s3: {}, murmur: {shape: diamond}}, click: {rate: 60 bpm}}\n"
     "cards:\n  - {text: \"Title\\nsub\", duration: 0.5 s, fade: 0.1 s}\n"
-    "captions:\n  - {text: \"First words\", from: 0.1 s, to: 0.6 s}\n  - {text: \"Then more\", from: 0.8 s, to: 1.2 s}\n"
+    "captions:\n  - {text: \"First words\", from: 0.1 s, to: 0.6 s, fade: 0.1 s}\n  - {text: \"Then more\", from: 0.8 s, to: 1.2 s, fade: 0.1 s}\n"
     "chapters:\n  - {title: \"Beat\", at: 0.4 s}\n";
 
 /// Mono float samples of a file's first audio stream at 48 kHz, decoded by ffmpeg (which
