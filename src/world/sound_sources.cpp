@@ -36,12 +36,15 @@ double parabolic_peak_s(const std::vector<Sample>& s, std::size_t i) {
 std::vector<CycleEvent> detect_cycle_events(const std::vector<Sample>& size, double hysteresis) {
   std::vector<CycleEvent> events;
   if (size.size() < 3) return events;
-  // The first swing's threshold: a small share of the chamber's size (a cardiac contraction
-  // changes it by several per cent); afterwards a share of the last swing.
-  double threshold = 1e-3 * std::abs(size.front().value);
+  // A turn counts once the size has moved back by `hysteresis` of its whole range over the
+  // run: ringing near a plateau is a small share of a beat's swing, a beat never is (the
+  // run is known whole: the soundtrack is made before the frames, clip/soundtrack.h).
+  double lo = size.front().value, hi = lo;
+  for (const Sample& s : size) lo = std::min(lo, s.value), hi = std::max(hi, s.value);
+  const double threshold = hysteresis * (hi - lo);
+  if (!(threshold > 0)) return events;
   std::size_t extreme = 0;
   int direction = 0;  // +1 rising (looking for a maximum), -1 falling, 0 not yet known.
-  double last_turn_value = size.front().value;
   std::size_t last_refill = 0;
   bool have_refill = false;
   const auto add_peak_refill = [&](std::size_t from, std::size_t to) {
@@ -74,14 +77,10 @@ std::vector<CycleEvent> detect_cycle_events(const std::vector<Sample>& size, dou
       // A maximum: the chamber started to shrink at `extreme`.
       events.push_back({CycleEventKind::kShrinkOnset, parabolic_peak_s(size, extreme)});
       if (have_refill) add_peak_refill(last_refill, extreme);
-      threshold = std::max(threshold, hysteresis * std::abs(e_now - last_turn_value));
-      last_turn_value = e_now;
       direction = -1;
       extreme = i;
     } else if (direction < 0 && v - e_now > threshold) {
       events.push_back({CycleEventKind::kRefillOnset, parabolic_peak_s(size, extreme)});
-      threshold = std::max(1e-3 * std::abs(e_now), hysteresis * std::abs(e_now - last_turn_value));
-      last_turn_value = e_now;
       last_refill = extreme;
       have_refill = true;
       direction = 1;

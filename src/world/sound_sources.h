@@ -53,8 +53,8 @@ struct CycleEvent {
 
 /// The turning points of a chamber size sampled every step (uniform spacing): a maximum is
 /// a shrink onset, a minimum a refill onset, each counted only when the size then moves away
-/// by more than `hysteresis` of the last swing (so the small ringing of a mass-spring body
-/// near a plateau is not a beat), and placed between samples at the vertex of the parabola
+/// by more than `hysteresis` of its range over the whole run (so the small ringing of a
+/// mass-spring body near a plateau is not a beat), and placed between samples at the vertex of the parabola
 /// through the extreme sample and its two neighbours. Between each refill onset and the next
 /// shrink onset, the fastest growth is a peak refill. Events in time order.
 std::vector<CycleEvent> detect_cycle_events(const std::vector<Sample>& size, double hysteresis = 0.2);

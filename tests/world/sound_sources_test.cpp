@@ -66,6 +66,7 @@ TEST(CycleEvents, TheBeatingHeartShrinksOnceAndRefillsOncePerBeat) {
   ASSERT_EQ(samples.size(), static_cast<std::size_t>((s.output.frame_count() - 1) * w.steps_per_frame));
   int shrink = 0, refill = 0;
   for (const CycleEvent& e : detect_cycle_events(samples)) {
+    std::cout << "[ event ] " << int(e.kind) << " at " << e.time_s << " s\n";
     shrink += e.kind == CycleEventKind::kShrinkOnset;
     refill += e.kind == CycleEventKind::kRefillOnset;
   }
