@@ -144,7 +144,10 @@ audio::Soundtrack make_soundtrack(const scene::Scene& scene, int first_frame, in
   const bool loop = scene.output.loop && first_frame == 0 && last_frame + 1 == scene.output.frame_count();
   world::World world = world::build_world(scene);
   SoundProbe probe(scene, world);
-  const int extra = loop ? static_cast<int>(std::ceil(1.0 / world.frame_s)) : 0;
+  // Past the last frame: a turn is known once the size has moved back from it (half a
+  // second confirms the last S1 or S2 of the clip); a loop's last murmur window closes within
+  // a second.
+  const int extra = static_cast<int>(std::ceil((loop ? 1.0 : 0.5) / world.frame_s));
   world::advance_to_frame(world, last_frame + extra);
   return audio::mix(mix_request(scene, probe.finish(), clock, duration_s, loop));
 }

@@ -58,8 +58,9 @@ audio::MixRequest mix_request(const scene::Scene& scene, const SoundSources& sou
                               double duration_s, bool loop);
 
 /// The soundtrack of a video of clip frames [first_frame, last_frame] with `card_frames` of
-/// title cards: simulates a world of its own through the last frame (through one more second
-/// for a loop, so its last murmur window closes), measures, mixes.
+/// title cards: simulates a world of its own through the last frame and half a second more
+/// (a second for a loop, so its last murmur window closes) so the clip's last turns are
+/// confirmed, measures, mixes.
 audio::Soundtrack make_soundtrack(const scene::Scene& scene, int first_frame, int last_frame, int card_frames);
 
 }  // namespace systole::clip

@@ -90,6 +90,7 @@ struct Turn {
 /// the mean radial velocity of the regions' particles about their centroid (from the
 /// velocities the solver keeps, not from differences of sizes) changes sign, interpolated
 /// linearly between steps; a turn counts when the size then swings by over 30 % of its range.
+/// Simulates half a second past `frames` so the clip's last turn is confirmed by what follows.
 std::vector<Turn> simulated_turns(const scene::Scene& s, const std::vector<std::string>& regions, int frames) {
   world::World w = world::build_world(s);
   std::vector<int> particles;
@@ -120,7 +121,7 @@ std::vector<Turn> simulated_turns(const scene::Scene& s, const std::vector<std::
     }
     steps.push_back({b.state.time_s, radial / particles.size(), size / particles.size()});
   };
-  world::advance_to_frame(w, frames);
+  world::advance_to_frame(w, frames + static_cast<int>(std::ceil(0.5 / w.frame_s)));
   double lo = 1e9, hi = -1e9;
   for (const Step& st : steps) lo = std::min(lo, st.size), hi = std::max(hi, st.size);
   std::vector<Turn> all;
@@ -134,6 +135,7 @@ std::vector<Turn> simulated_turns(const scene::Scene& s, const std::vector<std::
   }
   std::vector<Turn> kept;
   std::vector<double> kept_size;
+  // The turns of the whole run; the caller keeps those inside its clip.
   for (std::size_t i = 0; i < all.size(); ++i) {
     if (!kept.empty() && kept.back().shrink == all[i].shrink) {
       // The same kind again: keep the more extreme one.
@@ -198,19 +200,22 @@ TEST(Sound, AfibBeatToBeatIntervalsAreTheSimulatedVentriclesIntervals) {
   const scene::Scene s = scene::load(scene_file, d);
   std::vector<double> simulated;
   for (const Turn& t : simulated_turns(s, s.audio.heart.regions, s.output.frame_count() - 1))
-    if (t.shrink && t.time_s > 0.1) simulated.push_back(t.time_s);
+    if (t.shrink && t.time_s > 0.1 && t.time_s < s.output.duration_s - 0.1) simulated.push_back(t.time_s);
   std::vector<double> heard;
   for (double h : onsets(read_wav(wav)))
-    if (h > 0.1) heard.push_back(h);
+    if (h > 0.1 && h < s.output.duration_s - 0.1) heard.push_back(h);
   ASSERT_GE(simulated.size(), 6u);
   ASSERT_EQ(heard.size(), simulated.size());
-  double shortest = 1e9, longest = 0;
+  double shortest = 1e9, longest = 0, worst = 0;
   for (std::size_t i = 1; i < heard.size(); ++i) {
     const double sim = simulated[i] - simulated[i - 1], snd = heard[i] - heard[i - 1];
     EXPECT_NEAR(snd, sim, 0.010) << "beat " << i;
+    worst = std::max(worst, std::abs(snd - sim));
     shortest = std::min(shortest, sim);
     longest = std::max(longest, sim);
   }
+  std::cout << "[ measured ] " << heard.size() - 1 << " intervals " << shortest << " .. " << longest
+            << " s; worst difference " << 1e3 * worst << " ms\n";
   EXPECT_GT(longest - shortest, 0.08) << "fibrillation's beats differ in length, and so must the sound's";
 }
 
