@@ -15,12 +15,13 @@ set(SYSTOLE_MODULES
   "plot:common,chart"
   "render:common,scene,mesh"
   "encode:common"
+  "audio:common"
   "overlay:common,scene,chart,plot"
-  "clip:common,scene,mesh,sim,world,chart,plot,render,encode,overlay"
-  "batch:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,clip"
-  "study:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,clip"
-  "export:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,clip"
-  "cli:common,scene,mesh,sim,world,train,chart,plot,render,encode,overlay,clip,batch,study,export")
+  "clip:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio"
+  "batch:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
+  "study:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
+  "export:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
+  "cli:common,scene,mesh,sim,world,train,chart,plot,render,encode,overlay,audio,clip,batch,study,export")
 
 # The one place the simulator meets the scene: the translation of a scene into sim's own
 # parameter structs. No other file under src/sim/ may include scene/.

@@ -297,6 +297,7 @@ clip::RenderRequest plan_request(const Job& job, const scene::Scene& scene, cons
     fs::create_directories(request.video.parent_path());
   }
   if (!options.png_dir.empty()) request.png_dir = options.several ? options.png_dir / job.name : options.png_dir;
+  if (!options.wav.empty()) request.wav = options.several ? options.wav / (job.name + ".wav") : options.wav;
   request.from_bake = options.from_bake;
   request.limits = options.limits;
   request.progress = options.progress;
@@ -317,7 +318,7 @@ JobResult run_job(const Job& job, const BatchOptions& options) {
     const std::string who = options.several ? job.name + ": " : "";
     // Leftovers of a run that died (SIGKILL, a lost node) go even when this job is skipped.
     if (!request.video.empty()) sweep_stale_outputs(request.video.has_parent_path() ? request.video.parent_path() : ".");
-    if (!request.video.empty() && request.png_dir.empty() && !options.force && up_to_date(request.video, identity)) {
+    if (!request.video.empty() && request.png_dir.empty() && request.wav.empty() && !options.force && up_to_date(request.video, identity)) {
       std::cerr << who << "up to date, skipped: " << request.video.string() << " (--force renders it again)\n";
       result.status = JobResult::Status::kSkipped;
     } else {

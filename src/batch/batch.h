@@ -71,6 +71,7 @@ std::vector<Job> select_shard(const std::vector<Job>& jobs, const Shard& shard);
 struct BatchOptions {
   std::filesystem::path output;   ///< -o: a video for one job; a folder for several (or when it is one).
   std::filesystem::path png_dir;  ///< --png: frames; with several jobs, one subfolder per job.
+  std::filesystem::path wav;      ///< --wav: the soundtrack alone; with several jobs, <folder>/<job>.wav.
   bool no_video = false;
   std::string frames;             ///< --frames list; empty: the whole clip.
   std::filesystem::path from_bake;

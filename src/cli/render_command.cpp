@@ -35,7 +35,7 @@ namespace {
 /// What `systole render` was given.
 struct RenderArgs {
   std::vector<std::string> scenes;
-  std::string output, png_dir, frames, from_bake, shard, progress;
+  std::string output, png_dir, wav, frames, from_bake, shard, progress;
   std::vector<std::string> defines;
   std::vector<std::filesystem::path> exports;  ///< --export: the animation itself beside the video.
   ExportRequest export_request;                ///< Its --encoding and --max-error.
@@ -72,6 +72,7 @@ int run_render(const RenderArgs& o) {
   batch::BatchOptions options;
   options.output = o.output;
   options.png_dir = o.png_dir;
+  options.wav = o.wav;
   options.no_video = o.no_video;
   options.frames = o.frames;
   options.from_bake = o.from_bake;
@@ -128,6 +129,9 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--png", o->png_dir,
                   "Also write the frames as numbered PNGs (frame_00042.png) into this folder (a subfolder per "
                   "job in a batch)");
+  cmd->add_option("--wav", o->wav,
+                  "Also write the soundtrack alone (the scene's audio:) as a 16-bit 48 kHz WAV file; with several "
+                  "scenes, a folder of <job>.wav");
   cmd->add_flag("--no-video", o->no_video, "Write no video (with --png: frames only)");
   cmd->add_option("--frames", o->frames,
                   std::string("Render only these frames, as PNGs (needs --png; with -o also a video, if they are "

@@ -17,6 +17,10 @@
 #include "clip/overlay_plan.h"
 #include "clip/progress.h"
 #include "clip/render_detail.h"
+#include "clip/soundtrack.h"
+#include "clip/text_tracks.h"
+#include "audio/wav.h"
+#include "encode/webvtt.h"
 #include "common/error.h"
 #include "encode/png.h"
 #include "encode/video_writer.h"
@@ -159,9 +163,22 @@ ClipSurfaces add_surfaces(render::Renderer& renderer, const scene::Scene& scene,
   return s;
 }
 
-std::unique_ptr<encode::FrameSink> open_video_sink(const scene::Scene& scene, const RenderRequest& request) {
+/// The video's sink with its soundtrack, subtitle track and chapters (GIF: the frames only).
+std::unique_ptr<encode::FrameSink> open_video_sink(const scene::Scene& scene, const RenderRequest& request,
+                                                   const std::vector<int>& frames, const audio::Soundtrack* sound) {
   if (request.video.empty()) return nullptr;
-  return encode::open_video(request.video, video_settings(scene.output, video_format(scene, request.video)));
+  encode::VideoSettings settings = video_settings(scene.output, video_format(scene, request.video));
+  if (settings.format != encode::VideoFormat::kGif) {
+    std::vector<int> cards = card_frame_counts(scene);
+    const double cards_s = frames.front() == 0 ? std::accumulate(cards.begin(), cards.end(), 0) / scene.output.fps : 0.0;
+    if (sound != nullptr) {
+      settings.audio = sound->samples;
+      settings.audio_rate_hz = sound->sample_rate_hz;
+    }
+    settings.subtitles = caption_cues(scene, frames.front(), frames.back(), cards_s);
+    settings.chapters = chapter_marks(scene, frames.front(), frames.back(), cards_s);
+  }
+  return encode::open_video(request.video, settings);
 }
 
 std::unique_ptr<encode::FrameSink> open_png_sink(const RenderRequest& request, int frame_count) {
@@ -175,12 +192,12 @@ std::unique_ptr<encode::FrameSink> open_png_sink(const RenderRequest& request, i
 class ClipFrames {
  public:
   ClipFrames(const scene::Scene& scene, const RenderRequest& request, const std::vector<int>& frames, world::World& world,
-             render::Renderer& renderer, StageTimes& times)
+             render::Renderer& renderer, StageTimes& times, const audio::Soundtrack* sound)
       : scene_(scene), out_(scene.output), frames_(frames), world_(world), renderer_(renderer), times_(times),
         surfaces_(add_surfaces(renderer, scene, world)),
         // The views: each a rectangle with its organs' surfaces; the render stage moves their cameras.
         views_(frame_views(scene, surfaces_.ids)),
-        video_(open_video_sink(scene, request)),
+        video_(open_video_sink(scene, request, frames, sound)),
         png_(open_png_sink(request, out_.frame_count())),
         // Title cards open the video when it starts at the clip's start; PNG frames are the
         // clip's frames only (with their captions), numbered as always.
@@ -277,7 +294,7 @@ class ClipFrames {
     }
     t0 = Clock::now();
     const int f = frames_[static_cast<std::size_t>(i)];
-    cards_.draw_captions(f, image);
+    if (out_.burn_captions) cards_.draw_captions(f, image);
     if (video_) video_->write(image, video_offset_ + f);
     if (png_) png_->write(image, f);
     times_.encode_s += seconds_since(t0);
@@ -344,7 +361,17 @@ StageTimes render_clip(const scene::Scene& given, const RenderRequest& request) 
   check_organs_in_view(scene, world);
   const int msaa = out.antialias == scene::Antialias::kMsaa4 ? 4 : out.antialias == scene::Antialias::kMsaa2 ? 2 : 0;
   render::Renderer renderer(out.width, out.height, msaa);
-  ClipFrames clip(scene, request, frames, world, renderer, times);
+  // The soundtrack first (its own simulation pass: clip/soundtrack.h), for the video and --wav.
+  std::optional<audio::Soundtrack> sound;
+  if (scene.audio.enabled && (!request.wav.empty() || !request.video.empty())) {
+    const auto t0 = Clock::now();
+    const std::vector<int> cards = card_frame_counts(scene);
+    sound = make_soundtrack(scene, frames.front(), frames.back(), std::accumulate(cards.begin(), cards.end(), 0));
+    times.simulate_s += seconds_since(t0);
+  } else if (!request.wav.empty()) {
+    throw Error(ExitCode::kUsage, "--wav: " + scene.path + " has no audio: section, so there is no soundtrack to write");
+  }
+  ClipFrames clip(scene, request, frames, world, renderer, times, sound ? &*sound : nullptr);
   Progress progress(request.job.empty() ? scene.name : request.job, static_cast<int>(frames.size()),
                     request.progress);
   PipelineStages stages;
@@ -357,6 +384,12 @@ StageTimes render_clip(const scene::Scene& given, const RenderRequest& request) 
   clip.write_cards();
   run_frame_pipeline(static_cast<int>(frames.size()), kPipelineDepth, request.overlap, stages);
   clip.finish();
+  if (!request.wav.empty()) audio::write_wav(request.wav, *sound);
+  if (!request.video.empty() && !scene.captions.empty()) {
+    const std::vector<int> cards = card_frame_counts(scene);
+    const double cards_s = frames.front() == 0 ? std::accumulate(cards.begin(), cards.end(), 0) / out.fps : 0.0;
+    encode::write_webvtt(webvtt_path(request.video), caption_cues(scene, frames.front(), frames.back(), cards_s));
+  }
   progress.finish();
   times.wall_s = seconds_since(start);
   return times;

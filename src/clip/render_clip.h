@@ -17,6 +17,8 @@ namespace systole::clip {
 struct RenderRequest {
   std::filesystem::path video;    ///< Video to write (format: video_format()); empty: no video.
   std::filesystem::path png_dir;  ///< Folder for numbered PNG frames; empty: none.
+  /// The soundtrack alone as a WAV file (the scene needs `audio:`); empty: none.
+  std::filesystem::path wav;
   /// Frames to render and encode (0-based, sorted, no duplicates; app::parse_frame_list);
   /// empty: every frame. The simulation still steps through every frame up to the last
   /// listed one, so frame k is the same image whatever else is rendered. A video needs

@@ -16,7 +16,9 @@
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
+#include <libavutil/channel_layout.h>
 #include <libavutil/dict.h>
+#include <libavutil/mem.h>
 #include <libavutil/frame.h>
 #include <libavutil/opt.h>
 #include <libavutil/rational.h>
@@ -38,12 +40,18 @@ struct Codec {
   const char* label;     ///< For messages: "MP4", ...
   AVPixelFormat pix_fmt;
   bool yuv;              ///< BT.709 limited-range YUV; otherwise full-range RGB planes.
+  const char* audio_encoder;     ///< The soundtrack's libavcodec encoder.
+  std::int64_t audio_bit_rate;   ///< unit: bit/s; 0 for a lossless codec.
+  const char* subtitle_encoder;  ///< The text track's encoder (it takes ASS dialogue lines).
 };
 
 const Codec& codec_of(VideoFormat f) {
-  static const Codec mp4{"libx264", "mp4", "MP4", AV_PIX_FMT_YUV420P, true};
-  static const Codec mkv{"ffv1", "matroska", "MKV", AV_PIX_FMT_BGR0, false};
-  static const Codec webm{"libvpx-vp9", "webm", "WebM", AV_PIX_FMT_YUV420P, true};
+  // Audio: AAC at 96 kbit/s mono is transparent for these low-pitched sounds; Opus at 64
+  // kbit/s likewise; FLAC keeps the lossless archive lossless. Text: the one subtitle codec
+  // each container's players read (mov_text is MP4's timed text, 3GPP TS 26.245).
+  static const Codec mp4{"libx264", "mp4", "MP4", AV_PIX_FMT_YUV420P, true, "aac", 96000, "mov_text"};
+  static const Codec mkv{"ffv1", "matroska", "MKV", AV_PIX_FMT_BGR0, false, "flac", 0, "srt"};
+  static const Codec webm{"libvpx-vp9", "webm", "WebM", AV_PIX_FMT_YUV420P, true, "libopus", 64000, "webvtt"};
   switch (f) {
     case VideoFormat::kMkv: return mkv;
     case VideoFormat::kWebm: return webm;
@@ -142,11 +150,19 @@ struct VideoWriter::Impl {
   std::int64_t frames = 0;     // Frames sent; the next frame's pts (unit: 1/fps).
   int first_index = 0;
   bool finished = false;
+  // The soundtrack (settings.audio), sent as the frames it accompanies are.
+  AVCodecContext* audio_encoder = nullptr;
+  AVStream* audio_stream = nullptr;
+  AVFrame* audio_frame = nullptr;
+  std::int64_t audio_sent = 0;  // Samples sent; the next audio frame's pts (unit: 1/rate).
 
   Impl(const std::filesystem::path& target, const VideoSettings& s)
       : settings(s), codec(codec_of(s.format)), output(target) {}
 
   ~Impl() {
+    for (AVPacket*& p : subtitle_packets) av_packet_free(&p);
+    av_frame_free(&audio_frame);
+    avcodec_free_context(&audio_encoder);
     sws_freeContext(sws);
     av_packet_free(&packet);
     av_frame_free(&frame);
@@ -163,7 +179,15 @@ struct VideoWriter::Impl {
   void open_encoder(const AVCodec* av_codec);
   void open_converter();
   void open_file();
+  void open_audio();
+  void add_subtitles();
+  void write_subtitles();
+  AVStream* subtitle_stream = nullptr;
+  std::vector<AVPacket*> subtitle_packets;
+  void add_chapters();
   void send(const AVFrame* f);
+  void send_audio_until(std::int64_t sample);
+  void write_packets(AVCodecContext* from, AVStream* to);
 };
 
 void VideoWriter::Impl::open() {
@@ -181,7 +205,12 @@ void VideoWriter::Impl::open() {
   format->flags |= AVFMT_FLAG_BITEXACT;
   open_encoder(av_codec);
   open_converter();
+  if (!settings.audio.empty()) open_audio();
+  if (!settings.subtitles.empty()) add_subtitles();
+  add_chapters();
   open_file();
+  // Every cue at once: the muxer's interleaving queue holds each until the frames reach it.
+  if (!settings.subtitles.empty()) write_subtitles();
 }
 
 void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
@@ -315,20 +344,218 @@ void VideoWriter::Impl::open_file() {
 void VideoWriter::Impl::send(const AVFrame* f) {
   int err = avcodec_send_frame(encoder, f);
   if (err < 0) fail(ExitCode::kInternal, std::string(codec.encoder) + " refused a frame: " + av_error_text(err));
+  write_packets(encoder, stream);
+}
+
+// Writes every packet `from` has ready to stream `to`.
+void VideoWriter::Impl::write_packets(AVCodecContext* from, AVStream* to) {
+  const char* name = from == encoder ? codec.encoder : codec.audio_encoder;
   for (;;) {
-    err = avcodec_receive_packet(encoder, packet);
+    int err = avcodec_receive_packet(from, packet);
     if (err == AVERROR(EAGAIN) || err == AVERROR_EOF) return;
-    if (err < 0) fail(ExitCode::kInternal, std::string(codec.encoder) + " failed: " + av_error_text(err));
+    if (err < 0) fail(ExitCode::kInternal, std::string(name) + " failed: " + av_error_text(err));
     // libavcodec 59's libx264 wrapper leaves durations at 0, which makes the last frame
     // last 0 s (a 30-frame clip at 30 fps would be 0.967 s). One frame = one tick.
-    if (packet->duration == 0) packet->duration = 1;
-    av_packet_rescale_ts(packet, encoder->time_base, stream->time_base);
-    packet->stream_index = stream->index;
+    if (packet->duration == 0 && from == encoder) packet->duration = 1;
+    av_packet_rescale_ts(packet, from->time_base, to->time_base);
+    packet->stream_index = to->index;
     err = av_interleaved_write_frame(format, packet);  // Takes the packet's reference.
     av_packet_unref(packet);
     if (err < 0) {
       fail(ExitCode::kIoError, "cannot write to '" + output.temp_path().string() + "': " + av_error_text(err));
     }
+  }
+}
+
+void VideoWriter::Impl::open_audio() {
+  const AVCodec* av_codec = avcodec_find_encoder_by_name(codec.audio_encoder);
+  if (av_codec == nullptr) {
+    fail(ExitCode::kInternal, std::string("this FFmpeg build has no ") + codec.audio_encoder +
+                                  " encoder for the soundtrack (install Debian's libavcodec59)");
+  }
+  audio_encoder = avcodec_alloc_context3(av_codec);
+  audio_frame = av_frame_alloc();
+  if (audio_encoder == nullptr || audio_frame == nullptr) fail(ExitCode::kInternal, "out of memory");
+  // Mono float if the encoder takes it (AAC: planar float, Opus: float), else 16-bit (FLAC).
+  AVSampleFormat sample_format = AV_SAMPLE_FMT_NONE;
+  for (AVSampleFormat wanted : {AV_SAMPLE_FMT_FLTP, AV_SAMPLE_FMT_FLT, AV_SAMPLE_FMT_S16}) {
+    for (const AVSampleFormat* f = av_codec->sample_fmts; f != nullptr && *f != AV_SAMPLE_FMT_NONE; ++f) {
+      if (*f == wanted && sample_format == AV_SAMPLE_FMT_NONE) sample_format = wanted;
+    }
+  }
+  if (sample_format == AV_SAMPLE_FMT_NONE) fail(ExitCode::kInternal, std::string(codec.audio_encoder) + " takes no sample format we write");
+  audio_encoder->sample_fmt = sample_format;
+  audio_encoder->sample_rate = settings.audio_rate_hz;
+  av_channel_layout_default(&audio_encoder->ch_layout, 1);
+  audio_encoder->time_base = AVRational{1, settings.audio_rate_hz};
+  audio_encoder->bit_rate = codec.audio_bit_rate;
+  // One thread and bit-exact: the same samples give the same packets.
+  audio_encoder->thread_count = 1;
+  audio_encoder->flags |= AV_CODEC_FLAG_BITEXACT;
+  if (format->oformat->flags & AVFMT_GLOBALHEADER) audio_encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  AVDictionary* options = nullptr;
+  if (settings.format == VideoFormat::kWebm) av_dict_set(&options, "application", "audio", 0);
+  const int err = avcodec_open2(audio_encoder, av_codec, &options);
+  av_dict_free(&options);
+  if (err < 0) fail(ExitCode::kInternal, std::string("cannot open ") + codec.audio_encoder + ": " + av_error_text(err));
+
+  audio_frame->format = audio_encoder->sample_fmt;
+  audio_frame->sample_rate = audio_encoder->sample_rate;
+  av_channel_layout_copy(&audio_frame->ch_layout, &audio_encoder->ch_layout);
+  audio_frame->nb_samples = audio_encoder->frame_size > 0 ? audio_encoder->frame_size : 1024;
+  if (av_frame_get_buffer(audio_frame, 0) < 0) fail(ExitCode::kInternal, "out of memory for an audio frame");
+  for (AVBufferRef* buffer : audio_frame->buf) {
+    if (buffer != nullptr) std::memset(buffer->data, 0, buffer->size);  // No stray bytes reach the encoder.
+  }
+  audio_stream = avformat_new_stream(format, nullptr);
+  if (audio_stream == nullptr) fail(ExitCode::kInternal, "cannot add an audio stream");
+  audio_stream->time_base = audio_encoder->time_base;
+  // The encoder's priming samples (AAC 1024, Opus 312) go with the parameters as
+  // initial_padding: the MP4 muxer writes them as the edit list's media time, the WebM muxer
+  // as CodecDelay, so a player drops them and sample 0 plays with frame 0.
+  if (avcodec_parameters_from_context(audio_stream->codecpar, audio_encoder) < 0) {
+    fail(ExitCode::kInternal, "cannot copy the audio encoder parameters to the stream");
+  }
+}
+
+// Sends whole audio frames of the soundtrack up to sample `until` (and a last short frame
+// when `until` is its end).
+void VideoWriter::Impl::send_audio_until(std::int64_t until) {
+  const auto total = static_cast<std::int64_t>(settings.audio.size());
+  until = std::min(until, total);
+  const int frame_size = audio_encoder->frame_size > 0 ? audio_encoder->frame_size : 1024;
+  while (audio_sent < until && (audio_sent + frame_size <= until || until == total)) {
+    const int n = static_cast<int>(std::min<std::int64_t>(frame_size, total - audio_sent));
+    int err = av_frame_make_writable(audio_frame);
+    if (err < 0) fail(ExitCode::kInternal, "cannot get a writable audio frame: " + av_error_text(err));
+    audio_frame->nb_samples = n;
+    const float* src = settings.audio.data() + audio_sent;
+    if (audio_encoder->sample_fmt == AV_SAMPLE_FMT_S16) {
+      auto* dst = reinterpret_cast<std::int16_t*>(audio_frame->data[0]);
+      for (int i = 0; i < n; ++i) dst[i] = static_cast<std::int16_t>(std::lround(std::clamp(src[i], -1.0f, 1.0f) * 32767.0f));
+    } else {  // Mono: planar and packed float are the same bytes.
+      std::memcpy(audio_frame->data[0], src, sizeof(float) * static_cast<std::size_t>(n));
+    }
+    audio_frame->pts = audio_sent;
+    err = avcodec_send_frame(audio_encoder, audio_frame);
+    if (err < 0) fail(ExitCode::kInternal, std::string(codec.audio_encoder) + " refused a frame: " + av_error_text(err));
+    audio_sent += n;
+    write_packets(audio_encoder, audio_stream);
+  }
+}
+
+namespace {
+
+// The ASS header the text encoders parse (what libavcodec's ff_ass_subtitle_header_default
+// writes); they take each cue as an ASS dialogue line.
+constexpr const char* kAssHeader =
+    "[Script Info]\r\nScriptType: v4.00+\r\nPlayResX: 384\r\nPlayResY: 288\r\nScaledBorderAndShadow: yes\r\n\r\n"
+    "[V4+ Styles]\r\nFormat: Name, Fontname, Fontsize, PrimaryColour, SecondaryColour, OutlineColour, BackColour, Bold, "
+    "Italic, Underline, StrikeOut, ScaleX, ScaleY, Spacing, Angle, BorderStyle, Outline, Shadow, Alignment, MarginL, "
+    "MarginR, MarginV, Encoding\r\nStyle: Default,Arial,16,&Hffffff,&Hffffff,&H0,&H0,0,0,0,0,100,100,0,0,1,1,0,2,10,10,"
+    "10,0\r\n\r\n[Events]\r\nFormat: Layer, Start, End, Style, Name, MarginL, MarginR, MarginV, Effect, Text\r\n";
+
+/// A caption as an ASS dialogue line's text: line breaks become \N; braces (ASS override
+/// blocks) and backslashes (escapes) would be read as markup, so they become ( ) and /.
+std::string ass_text(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '\n') out += "\\N";
+    else if (c == '{') out += '(';
+    else if (c == '}') out += ')';
+    else if (c == '\\') out += '/';
+    else out += c;
+  }
+  return out;
+}
+
+std::int64_t milliseconds(double s) { return static_cast<std::int64_t>(std::llround(s * 1000.0)); }
+
+}  // namespace
+
+void VideoWriter::Impl::add_subtitles() {
+  const AVCodec* av_codec = avcodec_find_encoder_by_name(codec.subtitle_encoder);
+  if (av_codec == nullptr) fail(ExitCode::kInternal, std::string("this FFmpeg build has no ") + codec.subtitle_encoder + " encoder");
+  AVCodecContext* text = avcodec_alloc_context3(av_codec);
+  if (text == nullptr) fail(ExitCode::kInternal, "out of memory");
+  text->time_base = AVRational{1, 1000};
+  text->subtitle_header = reinterpret_cast<std::uint8_t*>(av_strdup(kAssHeader));
+  text->subtitle_header_size = static_cast<int>(std::strlen(kAssHeader));
+  text->flags |= AV_CODEC_FLAG_BITEXACT;
+  int err = avcodec_open2(text, av_codec, nullptr);
+  std::vector<std::uint8_t> buffer(1 << 16);
+  std::string failure;
+  if (err < 0) failure = std::string("cannot open ") + codec.subtitle_encoder + ": " + av_error_text(err);
+  for (std::size_t i = 0; i < settings.subtitles.size() && failure.empty(); ++i) {
+    const TextCue& cue = settings.subtitles[i];
+    std::string line = "0,0,Default,,0,0,0,," + ass_text(cue.text);
+    AVSubtitleRect rect{};
+    rect.type = SUBTITLE_ASS;
+    rect.ass = line.data();
+    AVSubtitleRect* rects[1] = {&rect};
+    AVSubtitle sub{};
+    sub.num_rects = 1;
+    sub.rects = rects;
+    sub.start_display_time = 0;
+    sub.end_display_time = static_cast<std::uint32_t>(milliseconds(cue.to_s) - milliseconds(cue.from_s));
+    sub.pts = milliseconds(cue.from_s) * 1000;  // AV_TIME_BASE
+    const int n = avcodec_encode_subtitle(text, buffer.data(), static_cast<int>(buffer.size()), &sub);
+    if (n < 0) {
+      failure = std::string(codec.subtitle_encoder) + " refused caption " + std::to_string(i) + ": " + av_error_text(n);
+      break;
+    }
+    AVPacket* p = av_packet_alloc();
+    if (p == nullptr || av_new_packet(p, n) < 0) {
+      av_packet_free(&p);
+      failure = "out of memory";
+      break;
+    }
+    std::memcpy(p->data, buffer.data(), static_cast<std::size_t>(n));
+    p->pts = p->dts = milliseconds(cue.from_s);
+    p->duration = milliseconds(cue.to_s) - milliseconds(cue.from_s);
+    p->flags |= AV_PKT_FLAG_KEY;
+    subtitle_packets.push_back(p);
+  }
+  if (failure.empty()) {
+    subtitle_stream = avformat_new_stream(format, nullptr);
+    if (subtitle_stream == nullptr || avcodec_parameters_from_context(subtitle_stream->codecpar, text) < 0) {
+      failure = "cannot add a subtitle stream";
+    } else {
+      subtitle_stream->time_base = AVRational{1, 1000};
+      av_dict_set(&subtitle_stream->metadata, "language", "eng", 0);
+    }
+  }
+  avcodec_free_context(&text);
+  if (!failure.empty()) fail(ExitCode::kInternal, failure);
+}
+
+void VideoWriter::Impl::write_subtitles() {
+  for (AVPacket*& p : subtitle_packets) {
+    av_packet_rescale_ts(p, AVRational{1, 1000}, subtitle_stream->time_base);
+    p->stream_index = subtitle_stream->index;
+    const int err = av_interleaved_write_frame(format, p);
+    av_packet_free(&p);
+    if (err < 0) fail(ExitCode::kIoError, "cannot write a caption: " + av_error_text(err));
+  }
+  subtitle_packets.clear();
+}
+
+void VideoWriter::Impl::add_chapters() {
+  for (std::size_t i = 0; i < settings.chapters.size(); ++i) {
+    const ChapterMark& mark = settings.chapters[i];
+    auto* chapter = static_cast<AVChapter*>(av_mallocz(sizeof(AVChapter)));
+    void* grown = chapter == nullptr ? nullptr : av_realloc_array(format->chapters, format->nb_chapters + 1, sizeof(AVChapter*));
+    if (grown == nullptr) {
+      av_free(chapter);
+      fail(ExitCode::kInternal, "out of memory");
+    }
+    format->chapters = static_cast<AVChapter**>(grown);
+    format->chapters[format->nb_chapters++] = chapter;  // Freed with the format context.
+    chapter->id = static_cast<std::int64_t>(i) + 1;
+    chapter->time_base = AVRational{1, 1000};
+    chapter->start = milliseconds(mark.start_s);
+    chapter->end = milliseconds(mark.end_s);
+    av_dict_set(&chapter->metadata, "title", mark.title.c_str(), 0);
   }
 }
 
@@ -367,6 +594,11 @@ void VideoWriter::write(const Image& image, int frame_index) {
   m.frame->pts = m.frames;
   m.send(m.frame);
   ++m.frames;
+  // The sound of this frame's time: everything before the next frame starts.
+  if (m.audio_encoder != nullptr) {
+    const FrameRate rate = frame_rate_of(s.fps);
+    m.send_audio_until(av_rescale(m.frames, static_cast<std::int64_t>(rate.den) * s.audio_rate_hz, rate.num));
+  }
 }
 
 void VideoWriter::finish() {
@@ -374,6 +606,12 @@ void VideoWriter::finish() {
   if (m.finished) m.fail(ExitCode::kInternal, "finish() called twice");
   if (m.frames == 0) m.fail(ExitCode::kInternal, "no frame was written to '" + m.output.target().string() + "'");
   m.send(nullptr);
+  if (m.audio_encoder != nullptr) {
+    m.send_audio_until(static_cast<std::int64_t>(m.settings.audio.size()));
+    const int err = avcodec_send_frame(m.audio_encoder, nullptr);
+    if (err < 0) m.fail(ExitCode::kInternal, "cannot flush the audio encoder: " + av_error_text(err));
+    m.write_packets(m.audio_encoder, m.audio_stream);
+  }
   int err = av_write_trailer(m.format);  // With +faststart this also moves moov to the front.
   if (err < 0) {
     m.fail(ExitCode::kIoError, "cannot finish '" + m.output.target().string() + "': " + av_error_text(err));

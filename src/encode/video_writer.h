@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "encode/frame_sink.h"
 
@@ -33,6 +34,18 @@ std::optional<VideoFormat> video_format_of(const std::filesystem::path& file);
 /// "mp4", "mkv", "webm", "gif": the extension without the dot, and the scene's name for it.
 const char* extension_of(VideoFormat format);
 
+/// A subtitle cue: text shown over [from_s, to_s) of video time. unit: s
+struct TextCue {
+  double from_s = 0, to_s = 0;
+  std::string text;  ///< UTF-8; "\n" breaks a line.
+};
+
+/// A chapter mark over [start_s, end_s) of video time. unit: s
+struct ChapterMark {
+  double start_s = 0, end_s = 0;
+  std::string title;
+};
+
 struct VideoSettings {
   VideoFormat format = VideoFormat::kMp4;  ///< Not kGif: that is GifWriter's.
   int width = 1280;                 ///< unit: px; must be even.
@@ -46,6 +59,15 @@ struct VideoSettings {
                                     ///< always use 1: their output then never depends on it.
   int vp9_crf = 32;                 ///< VP9 constant quality, 0-63 (lower is better).
   int vp9_speed = 4;                ///< libvpx cpu-used, 0 (slowest, best) to 5, deadline "good".
+  /// The soundtrack, mono, sample 0 at video time 0; empty: no sound. MP4 takes it as AAC
+  /// (FFmpeg's own encoder), WebM as Opus (libopus), MKV as FLAC; the encoder's priming
+  /// samples are declared (MP4 edit list, WebM CodecDelay) so sample 0 plays with frame 0.
+  std::vector<float> audio;         ///< unit: full scale, in [-1, 1]
+  int audio_rate_hz = 48000;        ///< unit: samples/s
+  /// A subtitle track (MP4 mov_text, WebM WebVTT, MKV SubRip); empty: none.
+  std::vector<TextCue> subtitles;
+  /// Chapter marks (MP4 QuickTime and Nero chapters, Matroska and WebM Chapters).
+  std::vector<ChapterMark> chapters;
 };
 
 /// An exact frame rate, num/den frames per second.

@@ -47,6 +47,8 @@ struct Output {
   int crf = 20;            ///< x264 constant rate factor, 0 (lossless) to 51; default: the quality's.
   std::string preset = "veryfast";  ///< x264 preset; default: the quality's.
   Antialias antialias = Antialias::kFxaa;
+  /// Draw the captions into the frames; they are also a subtitle track and a .vtt file.
+  bool burn_captions = true;
   Color background = Color(0.06, 0.07, 0.09);
 
   int frame_count() const;  ///< Frames of the clip (title cards not counted): round(duration * fps * slow_motion).

@@ -11,6 +11,7 @@
 #include <vector>
 
 // The parts, one header per topic; include only the one you need.
+#include "scene/audio.h"
 #include "scene/drive.h"
 #include "scene/organ.h"
 #include "scene/origin.h"
@@ -35,7 +36,9 @@ struct Scene {
   Output output;
   std::vector<Card> cards;         ///< Shown in order before the clip.
   std::vector<Caption> captions;
+  std::vector<Chapter> chapters;   ///< Chapter marks besides the cards'.
   Overlay overlay;
+  Audio audio;                     ///< The soundtrack; off unless the scene has `audio:`.
 };
 
 }  // namespace systole::scene

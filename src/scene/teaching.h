@@ -53,6 +53,13 @@ struct Caption {
   Origin origin;
 };
 
+/// A chapter mark of the video (besides one per title card), for players' chapter menus.
+struct Chapter {
+  std::string title;
+  double at_s = 0;               ///< Video time from the clip's first frame (after the cards). unit: s
+  Origin origin;
+};
+
 // Teaching overlays drawn on each frame (src/overlay/, docs/teaching-visuals.md). Sizes are
 // pixels of a 720-line frame, scaled with output.height.
 

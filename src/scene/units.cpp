@@ -44,7 +44,7 @@ std::optional<double> take_number(std::string_view& text) {
   return value;
 }
 
-const std::array<DimensionInfo, 12> kDimensions = {{
+const std::array<DimensionInfo, 13> kDimensions = {{
     {"number", {}, false, R"("0.5")"},
     {"length", {{"m", 1}, {"cm", 0.01}, {"mm", 0.001}}, false, R"("2 cm" or "0.02 m")"},
     {"mass", {{"kg", 1}, {"g", 0.001}}, false, R"("300 g" or "0.3 kg")"},
@@ -58,6 +58,7 @@ const std::array<DimensionInfo, 12> kDimensions = {{
     {"force", {{"N", 1}}, false, R"("2 N")"},
     {"angular speed", {{"deg/s", std::numbers::pi / 180}, {"rad/s", 1}, {"rpm", 2 * std::numbers::pi / 60}}, true,
      R"("20 deg/s" or "3 rpm")"},
+    {"level", {{"dB", 1}}, true, R"("-6 dB")"},
 }};
 
 std::string expectation(const DimensionInfo& d) {

@@ -25,6 +25,7 @@ enum class Dimension {
   kAcceleration,  ///< m/s^2; a bare number is m/s^2.
   kForce,         ///< N; a bare number is newtons.
   kAngularSpeed,  ///< deg/s, rad/s, rpm; unit required (except 0).
+  kLevel,         ///< dB (a loudness ratio, kept in dB: not converted); unit required (except 0).
 };
 
 struct Unit {

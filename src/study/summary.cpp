@@ -92,7 +92,35 @@ void summarize_output(std::ostringstream& s, const scene::Scene& scene) {
     double cards_s = 0;
     for (const auto& c : scene.cards) cards_s += c.duration_s;
     s << "  " << scene.cards.size() << " title card(s) (" << cards_s << " s, before the clip), "
-      << scene.captions.size() << " caption(s)\n";
+      << scene.captions.size() << " caption(s)" << (out.burn_captions ? " burned in" : " not burned in") << "\n";
+  }
+  const bool gif = out.format == scene::Format::kGif;
+  if (!scene.captions.empty()) {
+    s << "  captions also as " << (gif ? "a .vtt file beside the GIF (a GIF holds no subtitle track)"
+                                       : "a subtitle track and a .vtt file beside the video") << "\n";
+  }
+  if (!scene.chapters.empty() || !scene.cards.empty()) {
+    s << "  " << scene.cards.size() + scene.chapters.size() << " chapter mark(s)"
+      << (gif ? ": none written, a GIF has no chapters" : "") << "\n";
+  }
+  if (scene.audio.enabled) {
+    const auto& a = scene.audio;
+    std::vector<std::string> parts;
+    if (a.heart.enabled) {
+      std::string h = "heart sounds of " + a.heart.organ + " timed by";
+      for (const auto& r : a.heart.regions) h += " " + r;
+      h += std::string(", stethoscope at the ") + (a.heart.stethoscope == scene::Stethoscope::kApex ? "apex" : "base");
+      if (a.heart.s3.enabled) h += ", S3";
+      if (a.heart.murmur.enabled) h += ", a murmur";
+      parts.push_back(h);
+    }
+    if (a.breath.enabled) parts.push_back("breath sounds of " + a.breath.organ);
+    if (a.click.enabled) parts.push_back("a click at " + std::to_string(a.click.rate_hz * 60).substr(0, 5) + " /min");
+    s << "  audio: ";
+    for (std::size_t i = 0; i < parts.size(); ++i) s << (i ? "; " : "") << parts[i];
+    s << (gif ? "; NOT in the video: a GIF has no sound (render --wav FILE writes it alone); PNG frames have none either"
+              : "; PNG frames have no sound (render --wav FILE writes it alone)")
+      << "\n";
   }
 }
 

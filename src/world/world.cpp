@@ -122,8 +122,12 @@ void render_positions(const OrganBody& body, Eigen::Matrix3Xd& out) {
 
 void advance_to_frame(World& w, int frame) {
   for (const int target = w.start_frame + frame; w.frames_done < target; ++w.frames_done) {
-    for (auto& body : w.organs) {
-      for (int k = 0; k < w.steps_per_frame; ++k) sim::step(body.model, body.state, w.dt_s);
+    for (std::size_t o = 0; o < w.organs.size(); ++o) {
+      OrganBody& body = w.organs[o];
+      for (int k = 0; k < w.steps_per_frame; ++k) {
+        sim::step(body.model, body.state, w.dt_s);
+        if (w.after_step) w.after_step(static_cast<int>(o), body);
+      }
       if (auto problem = sim::diagnose(body.model, body.state)) {
         std::ostringstream m;
         m << "simulation diverged at frame " << w.frames_done + 1 << " (t = " << body.state.time_s << " s): "

@@ -58,6 +58,10 @@ struct World {
   /// Called after every frame advance_to_frame steps through (with that frame's number),
   /// also frames that are not rendered: a trace of a simulated signal needs them all.
   std::function<void(int frame)> after_frame;
+  /// Called after every solver step of every organ (with the organ's index; its
+  /// state.time_s is the step's end): signals that need the simulation's own time
+  /// resolution, such as the heart sounds' timing (world/sound_sources.h).
+  std::function<void(int organ, const OrganBody& body)> after_step;
   Eigen::Matrix3Xd scratch_positions;  ///< The health check's copy of a body's render positions.
 };
 

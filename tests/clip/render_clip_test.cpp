@@ -236,8 +236,11 @@ TEST(OutputFormat, TheDefaultPathTakesTheFormatsExtension) {
 
 TEST(OutputFormat, EveryFormatIsTheSameBytesOnEveryRun) {
   const fs::path dir = scratch("format_determinism");
+  // With sound (AAC, Opus, FLAC: one thread, zeroed padding), a subtitle track and chapters.
   const std::string yaml = heart("duration: 0.3 s, loop: false, slow_motion: 2",
-                                 "captions:\n  - {text: \"Same bits\", from: 0.1 s, to: 0.5 s, fade: 0.1 s}\n");
+                                 "captions:\n  - {text: \"Same bits\", from: 0.1 s, to: 0.5 s, fade: 0.1 s}\n"
+                                 "chapters:\n  - {title: \"One\", at: 0.2 s}\n"
+                                 "audio: {heart: {s3: {}, murmur: {}}, click: {rate: 90 bpm}}\n");
   for (const char* ext : {"mkv", "webm", "gif", "mp4"}) {
     std::string bytes[2];
     for (int run = 0; run < 2; ++run) {

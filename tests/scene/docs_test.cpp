@@ -27,10 +27,10 @@ std::string read_docs() {
   return text.str();
 }
 
-// The first cell of every table row: | `organs[].body.mass` | ...
+// The first cell of every table row: | `organs[].body.mass` | ... (digits too: audio.heart.s1)
 std::set<std::string> documented_keys(const std::string& docs) {
   std::set<std::string> keys;
-  const std::regex row(R"(^\| `([a-z_\[\].]+)` \|)", std::regex::multiline);
+  const std::regex row(R"(^\| `([a-z0-9_\[\].]+)` \|)", std::regex::multiline);  // s1, s2: keys with digits
   for (auto it = std::sregex_iterator(docs.begin(), docs.end(), row); it != std::sregex_iterator(); ++it)
     keys.insert((*it)[1]);
   return keys;

@@ -91,6 +91,18 @@ ValueSpec<Caption> caption_spec() {
       });
 }
 
+ValueSpec<Chapter> chapter_spec() {
+  return map<Chapter>(
+      {
+          field("title", screen_text(200, true), &Chapter::title, "The chapter's name in players' chapter menus.")
+              .required(),
+          field("at", quantity(Dimension::kTime, closed(0, 36000)), &Chapter::at_s,
+                "Start, in video time from the clip's first frame (after the cards), as captions.")
+              .required(),
+      },
+      [](const Node& node, Chapter& c, const std::string&, const Context&) { c.origin = node.origin; });
+}
+
 ValueSpec<Output> output_spec() {
   auto even_size = whole<int>(16, 7680).also(
       [](const int& v) {
@@ -163,6 +175,9 @@ ValueSpec<Output> output_spec() {
                 "Edge smoothing: fxaa (a post pass, cheap), msaa2 or msaa4 (2 or 4 samples per pixel, slower), off; 0, "
                 "2, 4 mean off, msaa2, msaa4."),
           field("background", color(), &Output::background, "Background colour (sRGB)."),
+          field("burn_captions", boolean(), &Output::burn_captions,
+                "Draw the captions into the frames. Either way they are also a subtitle track (MP4, MKV, WebM) and a "
+                ".vtt file beside the video."),
       },
       [](const Node& node, Output& o, const std::string& path, const Context&) {
         // The quality names a preset and CRF (measured: docs/performance.md); keys written out win.

@@ -35,6 +35,14 @@ ValueSpec<Output> output_spec();
 /// whole loops, so the clip starts at the same phase as t = 0.
 void resolve_loop(const Node& node, Scene& s);
 
+ValueSpec<Chapter> chapter_spec();
+
+// audio.cpp
+ValueSpec<Audio> audio_spec();
+/// Cross-checks of the audio against the organs; fills in the heart organ and its
+/// ventricular regions, and the breathing organ, when the scene leaves them out.
+void check_audio(const Node& root, Scene& s);
+
 // overlay.cpp
 ValueSpec<View> view_spec();
 ValueSpec<Overlay> overlay_spec();

@@ -37,6 +37,11 @@ ValueSpec<Scene> scene_spec() {
                 "Title cards shown in order before the clip: text on the background colour, fading in and out."),
           field("captions", list(caption_spec(), 0, 256, "list of captions"), &Scene::captions,
                 "Text at the bottom of the clip over a time range, fading in and out."),
+          field("chapters", list(chapter_spec(), 0, 256, "list of chapters"), &Scene::chapters,
+                "Chapter marks of the video (each title card is one too), in increasing time."),
+          field("audio", audio_spec(), &Scene::audio,
+                "A soundtrack that follows the simulation: heart sounds, breath sounds, a click (docs/sound.md).")
+              .shown_default("none"),
           field("overlay", overlay_spec(), &Scene::overlay,
                 "Teaching overlays drawn on each frame: title, region labels, legend, trace insets "
                 "(docs/teaching-visuals.md)."),
@@ -64,6 +69,13 @@ ValueSpec<Scene> scene_spec() {
               fail(origin_of(node.find("organs")->items[i], "name"), "organs[" + std::to_string(i) + "].name",
                    "duplicate organ name '" + s.organs[i].name + "' (also organs[" + std::to_string(j) + "])");
         check_overlay(node, s);
+        check_audio(node, s);
+        const Node* chapters = node.find("chapters");
+        for (std::size_t i = 1; i < s.chapters.size(); ++i)
+          if (s.chapters[i].at_s <= s.chapters[i - 1].at_s)
+            fail(origin_of(chapters->items[i], "at"), "chapters[" + std::to_string(i) + "].at",
+                 format_quantity(s.chapters[i].at_s, Dimension::kTime) + " must be after the chapter before (" +
+                     format_quantity(s.chapters[i - 1].at_s, Dimension::kTime) + ")");
       });
 }
 
