@@ -8,16 +8,14 @@ set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_VENDOR "The Systole developers")
 set(CPACK_PACKAGE_CONTACT "Systole Developers <dev@systole.invalid>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "self-driven soft-body organ animations from YAML scenes")
-# The extended description: Debian's control format indents it and marks blank lines with ".".
-set(CPACK_PACKAGE_DESCRIPTION
-    "Systole turns a YAML scene into a teaching video of a living organ. A heart\n"
-    "beats, lungs breathe, a kidney pulses, because each organ is a soft body\n"
-    "whose own springs contract and relax in rhythm, region by region.\n"
-    "It simulates (Eigen), renders off screen (OSMesa) and encodes MP4, MKV,\n"
-    "WebM or GIF (libavcodec), with overlays, captions and cut-away views;\n"
-    "batches shard across Slurm, Kubernetes and AWS Batch arrays.\n"
-    "Example scenes are in /usr/share/systole/scenes.")
-string(REPLACE ";" "" CPACK_PACKAGE_DESCRIPTION "${CPACK_PACKAGE_DESCRIPTION}")
+# The extended description, one string (a CMake list would lose its semicolons).
+set(CPACK_PACKAGE_DESCRIPTION "Systole turns a YAML scene into a teaching video of a living organ. A heart
+beats, lungs breathe, a kidney pulses, because each organ is a soft body
+whose own springs contract and relax in rhythm, region by region.
+It simulates (Eigen), renders off screen (OSMesa) and encodes MP4, MKV,
+WebM or GIF (libavcodec), with overlays, captions and cut-away views.
+Batches shard across Slurm, Kubernetes and AWS Batch arrays.
+Example scenes are in /usr/share/systole/scenes.")
 set(CPACK_DEBIAN_PACKAGE_RELEASE ${SYSTOLE_DEBIAN_REVISION})
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # systole_0.1.0-1_amd64.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)

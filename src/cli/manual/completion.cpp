@@ -23,10 +23,11 @@ std::string word_list(const std::vector<std::string>& words) {
   return out;
 }
 
-/// The first sentence of a description, for a completion menu; quotes and brackets, which
-/// zsh's _arguments specs use, become harmless.
+/// The first clause of a description, for a completion menu ("Video to write: .mp4 ..." gives
+/// "Video to write"); quotes and brackets, which zsh's _arguments specs use, become harmless.
 std::string menu_text(const std::string& description) {
-  std::string text = description.substr(0, description.find(". "));
+  std::string text = description;
+  for (const char* end : {". ", ": ", "; "}) text = text.substr(0, text.find(end));
   if (!text.empty() && text.back() == '.') text.pop_back();
   std::string out;
   for (const char c : text) {
