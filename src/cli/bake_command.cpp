@@ -15,8 +15,9 @@ Command add_bake_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
       "bake", "Simulate a scene and save every frame's positions, to render frame ranges apart (render --from-bake).");
-  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
-  cmd->add_option("-o,--output", o->output, "Bake file to write (default: out/<scene>.bake)");
+  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required()->type_name(kSceneValue);
+  cmd->add_option("-o,--output", o->output, "Bake file to write (default: out/<scene>.bake)")
+      ->type_name(kFileValue);
   add_progress_option(*cmd, o->progress);
   add_define_option(*cmd, o->defines);
   return {cmd, [o] {

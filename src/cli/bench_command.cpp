@@ -95,9 +95,10 @@ Command add_bench_command(CLI::App& app) {
   auto o = std::make_shared<BenchArgs>();
   auto* cmd = app.add_subcommand("bench", "Speed versus error: run the scene's organs over solver x step x model "
                                           "configurations against a reference; print a table, write CSV and a plot.");
-  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
+  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required()->type_name(kSceneValue);
   add_define_option(*cmd, o->defines);
-  cmd->add_option("-o,--output", o->output, "Prefix of the outputs: PREFIX.csv and PREFIX.png (default out/<scene>-bench)");
+  cmd->add_option("-o,--output", o->output, "Prefix of the outputs: PREFIX.csv and PREFIX.png (default out/<scene>-bench)")
+      ->type_name(kFileValue);
   cmd->add_option("--duration", o->duration_s, "Simulated seconds per run (default: whole beats covering 2 s)")
       ->check(CLI::Range(0.1, 60.0));
   cmd->add_option("--method", o->methods, "Narrow the grid: solvers (projective, xpbd, implicit, explicit)")

@@ -12,6 +12,14 @@
 
 namespace systole::cli {
 
+/// What an option's value is, as its CLI11 type name: `--help` and the man page show it, and
+/// the shell completions complete by it (cli/manual/completion.cpp): scene files (and the
+/// folders that hold them), any file, folders, and -D's scene keys.
+inline constexpr const char* kSceneValue = "SCENE";
+inline constexpr const char* kFileValue = "FILE";
+inline constexpr const char* kFolderValue = "DIR";
+inline constexpr const char* kSceneKeyValue = "KEY=VALUE";
+
 struct Command {
   CLI::App* parser = nullptr;
   std::function<int()> run;  ///< Returns the exit code; throws systole::Error on failure.

@@ -70,12 +70,14 @@ Command add_export_command(CLI::App& app) {
   auto o = std::make_shared<ExportRequest>();
   auto* cmd = app.add_subcommand(
       "export", "Export the animation itself: glTF for viewers, point caches for Blender, VTK for ParaView, USD, a web page.");
-  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
+  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required()->type_name(kSceneValue);
   cmd->add_option("-o,--output", o->outputs,
                   "File to write (repeatable), format by extension: " + exporter::known_extensions() +
-                      " (default: out/<scene>.glb)");
+                      " (default: out/<scene>.glb)")
+      ->type_name(kFileValue);
   cmd->add_flag("--html", o->html, "Also write a self-contained web page that plays it (<first output>.html)");
-  cmd->add_option("--from-bake", o->from_bake, "Read the positions from this bake (systole bake) instead of simulating");
+  cmd->add_option("--from-bake", o->from_bake, "Read the positions from this bake (systole bake) instead of simulating")
+      ->type_name(kFileValue);
   add_export_options(*cmd, *o);
   add_define_option(*cmd, o->defines);
   return {cmd, [o] {

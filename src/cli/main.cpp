@@ -1,5 +1,5 @@
-// systole: the command line. A thin layer over app/: it parses arguments, maps errors to
-// exit codes and is the only place that exits.
+// systole: the command line. A thin layer over the modules: it parses arguments (the app is
+// built by command_line.cpp), maps errors to exit codes and is the only place that exits.
 
 #include <unistd.h>
 
@@ -7,7 +7,7 @@
 #include <iostream>
 #include <new>
 
-#include "cli/command.h"
+#include "cli/command_line.h"
 #include "common/atomic_output.h"
 #include "common/error.h"
 
@@ -37,20 +37,8 @@ void install_signal_handlers() {
 
 int main(int argc, char** argv) {
   install_signal_handlers();
-  CLI::App app{"Systole: self-driven soft-body organ animations, from a YAML scene to a video."};
-  app.set_version_flag("--version", std::string("systole ") + SYSTOLE_VERSION);
-  app.require_subcommand(1);
-  const std::vector<systole::cli::Command> commands = {
-      systole::cli::add_render_command(app),
-      systole::cli::add_validate_command(app),
-      systole::cli::add_compare_command(app),
-      systole::cli::add_bake_command(app),
-      systole::cli::add_info_command(app),
-      systole::cli::add_bench_command(app),
-      systole::cli::add_tune_command(app),
-      systole::cli::add_motion_command(app),
-      systole::cli::add_export_command(app),
-  };
+  systole::cli::CommandLine command_line;
+  CLI::App& app = command_line.app;
 
   try {
     app.parse(argc, argv);
@@ -60,7 +48,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    for (const auto& command : commands) {
+    for (const auto& command : command_line.commands) {
       if (command.parser->parsed()) return command.run();
     }
   } catch (const Error& e) {

@@ -22,7 +22,7 @@ Command add_motion_command(CLI::App& app) {
   auto o = std::make_shared<MotionArgs>();
   auto* cmd = app.add_subcommand("motion", "Check the simulated motion: every driven region repeats its beat, and no "
                                            "part of a multi-part mesh passes through another. Exit 1 if not.");
-  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
+  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required()->type_name(kSceneValue);
   add_define_option(*cmd, o->defines);
   cmd->add_option("--duration", o->duration_s, "Organ seconds to simulate (default: the scene's output.duration)")
       ->check(CLI::Range(0.1, 600.0));

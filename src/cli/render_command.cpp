@@ -122,21 +122,27 @@ int run_render(const RenderArgs& o) {
 Command add_render_command(CLI::App& app) {
   auto o = std::make_shared<RenderArgs>();
   auto* cmd = app.add_subcommand("render", "Simulate and render scenes to videos (and PNG frames).");
-  cmd->add_option("scene", o->scenes, "Scene files (YAML), folders of them, or glob patterns")->required();
+  cmd->add_option("scene", o->scenes, "Scene files (YAML), folders of them, or glob patterns")
+      ->required()
+      ->type_name(kSceneValue);
   cmd->add_option("-o,--output", o->output,
                   "Video to write: .mp4 (H.264), .mkv (FFV1, lossless), .webm (VP9) or .gif (default: "
-                  "output.file, else out/<scene>.<output.format>); with several jobs, a folder for <job>.<format>");
+                  "output.file, else out/<scene>.<output.format>); with several jobs, a folder for <job>.<format>")
+      ->type_name(kFileValue);
   cmd->add_option("--png", o->png_dir,
                   "Also write the frames as numbered PNGs (frame_00042.png) into this folder (a subfolder per "
-                  "job in a batch)");
+                  "job in a batch)")
+      ->type_name(kFolderValue);
   cmd->add_option("--wav", o->wav,
                   "Also write the soundtrack alone (the scene's audio:) as a 16-bit 48 kHz WAV file; with several "
-                  "scenes, a folder of <job>.wav");
+                  "scenes, a folder of <job>.wav")
+      ->type_name(kFileValue);
   cmd->add_flag("--no-video", o->no_video, "Write no video (with --png: frames only)");
   cmd->add_option("--frames", o->frames,
                   std::string("Render only these frames, as PNGs (needs --png; with -o also a video, if they are "
                               "consecutive). Forms: ") + clip::kFrameListForms);
-  cmd->add_option("--from-bake", o->from_bake, "Read the positions from this bake (systole bake) instead of simulating");
+  cmd->add_option("--from-bake", o->from_bake, "Read the positions from this bake (systole bake) instead of simulating")
+      ->type_name(kFileValue);
   cmd->add_option("-j,--jobs", o->jobs, "Clips rendered at once, each in its own process")
       ->check(CLI::Range(1, 64))
       ->default_val(1);
@@ -150,7 +156,8 @@ Command add_render_command(CLI::App& app) {
   add_allow_large_flag(*cmd, o->allow_large);
   cmd->add_option("--export", o->exports,
                   "Also export the animation itself (repeatable; .glb, .gltf, .pc2, .mdd, .pvd, .usda, .html: "
-                  "systole export)");
+                  "systole export)")
+      ->type_name(kFileValue);
   add_export_options(*cmd, o->export_request);
 
   return {cmd, [o] { return run_render(*o); }};

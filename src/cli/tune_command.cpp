@@ -25,9 +25,12 @@ Command add_tune_command(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("tune", "Fit and tune region drives to each organ's target motion; write a scene that plays them.");
-  cmd->add_option("scene", o->scene, "Scene file (YAML) with a target on at least one organ")->required();
-  cmd->add_option("-o,--output", o->output, "Tuned scene to write (YAML)")->required();
-  cmd->add_option("--report", o->report, "Folder for report.md and one SVG plot per region");
+  cmd->add_option("scene", o->scene, "Scene file (YAML) with a target on at least one organ")
+      ->required()
+      ->type_name(kSceneValue);
+  cmd->add_option("-o,--output", o->output, "Tuned scene to write (YAML)")->required()->type_name(kFileValue);
+  cmd->add_option("--report", o->report, "Folder for report.md and one SVG plot per region")
+      ->type_name(kFolderValue);
   cmd->add_option("--budget", o->budget, "Playbacks per organ (default: the target's budget)")->check(CLI::NonNegativeNumber);
   auto* seed = cmd->add_option("--seed", o->seed, "Seed of the search (default: the scene's seed)");
   cmd->add_option("--jobs", o->jobs, "Candidates simulated at once (default: every core); same result at any count")

@@ -12,7 +12,8 @@
 namespace systole::cli {
 
 void add_define_option(CLI::App& command, std::vector<std::string>& defines) {
-  command.add_option("-D,--define", defines, "Override a scene value: key.path=value (repeatable)");
+  command.add_option("-D,--define", defines, "Override a scene value: key.path=value (repeatable)")
+      ->type_name(kSceneKeyValue);
 }
 
 void add_allow_large_flag(CLI::App& command, bool& allow_large) {
@@ -30,7 +31,7 @@ Command add_validate_command(CLI::App& app) {
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("validate", "Parse a scene and build its model; render nothing.");
-  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required();
+  cmd->add_option("scene", o->scene, "Scene file (YAML)")->required()->type_name(kSceneValue);
   add_define_option(*cmd, o->defines);
   add_allow_large_flag(*cmd, o->allow_large);
   cmd->add_flag("--physiology", o->physiology,
