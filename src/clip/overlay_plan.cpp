@@ -165,19 +165,35 @@ void OverlayPlan::plan_labels(const scene::Scene& scene, const world::World& wor
     }
     return scene.views.empty() ? 0 : -1;
   };
+  // The view asked for, if it shows the organ.
+  auto chosen_view = [&](const std::string& organ) {
+    for (std::size_t v = 0; v < scene.views.size(); ++v) {
+      if (scene.views[v].title != spec_.labels.view) continue;
+      const auto& names = scene.views[v].organs;
+      return names.empty() || std::find(names.begin(), names.end(), organ) != names.end() ? static_cast<int>(v) : -1;
+    }
+    return -1;
+  };
+  Eigen::Matrix3Xd rest;
   for (std::size_t o = 0; o < scene.organs.size(); ++o) {
     const auto& organ = scene.organs[o];
     if (!spec_.labels.organ.empty() && spec_.labels.organ != organ.name) continue;
-    const int view = view_of(organ.name);
+    const int view = spec_.labels.view.empty() ? view_of(organ.name) : chosen_view(organ.name);
     if (view < 0) continue;  // In no view: nowhere to label it.
+    // The cut this organ has in that view: its own, else the view's. A region is anchored on
+    // the vertices the cut keeps (at rest), so a label points at what can be seen.
+    const scene::ClipPlane* cut = &organ.clip;
+    if (!cut->enabled && !scene.views.empty()) cut = &scene.views[static_cast<std::size_t>(view)].clip;
+    world::render_positions(world.organs[o], rest);
+    const auto kept = [&](int v) { return !cut->enabled || cut->normal.dot(rest.col(v) - cut->point_m) >= 0; };
     const auto& vertex_region = world.organs[o].geometry.vertex_region;
     for (std::size_t r = 0; r < organ.regions.size(); ++r) {
       const auto& wanted = spec_.labels.regions;
       if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), organ.regions[r].name) == wanted.end()) continue;
       LabelTarget t{static_cast<int>(o), view, spaced(organ.regions[r].name), {}};
       for (std::size_t v = 0; v < vertex_region.size(); ++v)
-        if (vertex_region[v] == static_cast<int>(r)) t.vertices.push_back(static_cast<int>(v));
-      if (!t.vertices.empty()) targets_.push_back(std::move(t));  // A region a later one took whole has no place.
+        if (vertex_region[v] == static_cast<int>(r) && kept(static_cast<int>(v))) t.vertices.push_back(static_cast<int>(v));
+      if (!t.vertices.empty()) targets_.push_back(std::move(t));  // Taken whole by a later region, or cut away.
     }
   }
 }

@@ -61,9 +61,9 @@ class OverlayPlan {
  private:
   struct LabelTarget {
     int organ = 0;
-    int view = 0;               ///< The view it is labelled in: the first that shows its organ.
+    int view = 0;               ///< The view it is labelled in (overlay.labels.view, else the first that shows its organ).
     std::string text;
-    std::vector<int> vertices;  ///< Render-mesh vertices of the region.
+    std::vector<int> vertices;  ///< Render-mesh vertices of the region that the view's cut keeps.
   };
   /// A view of the frame (the whole frame when the scene has no `views`).
   struct ViewFrame {

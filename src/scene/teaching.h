@@ -69,6 +69,9 @@ struct LabelsOverlay {
   bool enabled = false;
   std::string organ;                 ///< Empty: every organ.
   std::vector<std::string> regions;  ///< Empty: every region (`all`).
+  /// Title of the view labelled; empty: each organ in the first view that shows it. In a
+  /// cut view a region is anchored on what the cut keeps of it, so inner parts can be named.
+  std::string view;
   int size_px = 16;                  ///< Text height. unit: px at 720 lines
   Origin origin;
 };

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "clip/bake.h"
+#include "clip/camera_framing.h"
 #include "clip/progress.h"
 #include "clip/render_clip.h"
 #include "render/camera_matrices.h"
@@ -118,6 +119,28 @@ TEST(OverlayPlan, LabelsLandOnTheirRegionsAndFollowThem) {
       moved = std::max(moved, std::hypot(anchors[i].first - anchors_at_rest[i].first, anchors[i].second - anchors_at_rest[i].second));
     EXPECT_GT(moved, 0.5);
   }
+}
+
+TEST(OverlayPlan, LabelsInACutViewNameWhatTheCutKeeps) {
+  // heart-cutaway's second view cut across the short axis instead: the apical half is cut
+  // away, so the apex has nothing left to label while the left ventricle's lining does, and
+  // every label lands in that view (the right half of the frame).
+  const scene::Scene given = scene::load(
+      source("scenes/heart-cutaway.yaml"),
+      {"output.width=" + std::to_string(kWidth), "output.height=" + std::to_string(kHeight),
+       "views.1.clip.section=short_axis", "overlay.labels.regions=[apex, left_ventricle_cavity, mitral_valve]"});
+  world::World world = world::build_world(given);
+  const scene::Scene s = clip::with_cameras_placed(given, world);
+  clip::OverlayPlan plan(s, world);
+  const clip::OverlayFrame f = capture(plan, 0, positions_now(world));
+  Image image(kWidth, kHeight);
+  plan.draw(image, f);
+  std::vector<std::string> texts;
+  for (const auto& l : plan.placed_labels()) {
+    texts.push_back(l.text);
+    EXPECT_GE(l.anchor_x, kWidth / 2) << l.text;  // In the cut view.
+  }
+  EXPECT_EQ(texts, (std::vector<std::string>{"left ventricle cavity", "mitral valve"}));
 }
 
 TEST(OverlayPlan, VolumeTraceFallsAsTheVentriclesContractAndTheCursorMoves) {

@@ -50,6 +50,10 @@ TEST(OverlaySchema, MistakesNameTheirPlaceAndKey) {
   } cases[] = {
       {"overlay: {labels: {regions: [left_ventricel]}}\n",
        "scenes/test.yaml:7:30: overlay.labels.regions[0]: no region is named 'left_ventricel'"},
+      {"overlay: {labels: {view: Inside}}\n",
+       "scenes/test.yaml:7:26: overlay.labels.view: no view is titled 'Inside' (the scene has no views)"},
+      {"views: [{title: Outside}, {title: Cut}]\noverlay: {labels: {view: Inside}}\n",
+       "overlay.labels.view: no view is titled 'Inside' (views: 'Outside', 'Cut')"},
       {"overlay: {labels: {siz: 12}}\n", "scenes/test.yaml:7:20: overlay.labels: unknown key 'siz' (did you mean 'size'?)"},
       {"overlay: {labels: {size: 200}}\n", "scenes/test.yaml:7:26: overlay.labels.size: 200 is outside 6..96"},
       {"overlay: {legend: {organ: lungs}}\n", "scenes/test.yaml:7:27: overlay.legend.organ: no organ is named 'lungs'"},

@@ -81,6 +81,10 @@ ValueSpec<Overlay> overlay_spec() {
           field("organ", name_text(), &LabelsOverlay::organ, "The organ whose regions are labelled.")
               .shown_default("every organ"),
           field("regions", region_names(), &LabelsOverlay::regions, "The regions labelled."),
+          field("view", screen_text(200, true), &LabelsOverlay::view,
+                "Title of the view labelled; in a cut view each region is anchored on what the cut keeps of it "
+                "(a cavity's lining, a valve).")
+              .shown_default("each organ in the first view that shows it"),
           field("size", size, &LabelsOverlay::size_px,
                 "Text height in pixels of a 720-line frame (scaled with output.height)."),
       },
@@ -193,6 +197,13 @@ void check_overlay(const Node& root, const Scene& s) {
         fail(labels->find("regions")->items[i].origin, "overlay.labels.regions[" + std::to_string(i) + "]",
              "no region is named '" + name + "'" +
                  (ov.labels.organ.empty() ? "" : " in organ '" + ov.labels.organ + "'"));
+    }
+    if (!ov.labels.view.empty() &&
+        std::none_of(s.views.begin(), s.views.end(), [&](const View& v) { return v.title == ov.labels.view; })) {
+      std::string titles;
+      for (const View& v : s.views) titles += (titles.empty() ? "'" : ", '") + v.title + "'";
+      fail(origin_of(*labels, "view"), "overlay.labels.view",
+           "no view is titled '" + ov.labels.view + "' (" + (titles.empty() ? "the scene has no views" : "views: " + titles) + ")");
     }
   }
   if (ov.legend.enabled) find_organ(ov.legend.organ, origin_of(*node->find("legend"), "organ"), "overlay.legend.organ");
