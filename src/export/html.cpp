@@ -76,8 +76,8 @@ function fitDepth() {
   camera.updateProjectionMatrix();
 }
 
-// Whether the camera shows the organs' sphere at all: in front of it, overlapping the view,
-// and wider than a few pixels.
+// Whether the camera shows the organs' sphere usefully: in front of it, overlapping the
+// view, and across at least 5 % of its height (a far camera's few-pixel dot is no view).
 function seesOrgans() {
   camera.updateMatrixWorld();
   const eye = organs.center.clone().applyMatrix4(camera.matrixWorldInverse);
@@ -85,7 +85,7 @@ function seesOrgans() {
   const scale = 1 / (-eye.z * Math.tan(THREE.MathUtils.degToRad(camera.fov / 2)));
   const x = eye.x * scale / camera.aspect, y = eye.y * scale;
   const r = organs.radius * scale;
-  return Math.abs(x) - r / camera.aspect < 1 && Math.abs(y) - r < 1 && r * canvas.clientHeight > 4;
+  return Math.abs(x) - r / camera.aspect < 1 && Math.abs(y) - r < 1 && r > 0.05;
 }
 
 function resize() {
@@ -132,7 +132,7 @@ new GLTFLoader().parse(bytes.buffer, '', (gltf) => {
     setCamera({ position: organs.center.clone().add(new THREE.Vector3(0, 0, distance)).toArray(),
                 target: organs.center.toArray(), up: [0, 1, 0], fov_deg: camera.fov });
     framedBy = 'page';
-    console.info('the scene\'s camera shows no organ here: the page frames them itself');
+    console.info('the scene\'s camera does not show the organs (behind, outside or too far): the page frames them itself');
   }
   if (gltf.animations.length > 0) {
     mixer = new THREE.AnimationMixer(gltf.scene);
