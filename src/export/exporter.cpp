@@ -41,8 +41,9 @@ std::string morph_report(const Recording& rec, const std::vector<MorphAnimation>
   std::string text;
   char line[256];
   if (options.encoding == Encoding::kCompact) {
-    std::snprintf(line, sizeof line, "compact loop of %d frames (%.3f s, whole cycles after settling)", rec.frame_count(),
-                  rec.frame_count() / rec.fps);
+    std::snprintf(line, sizeof line,
+                  "compact loop of %d frames (%.3f s, whole cycles after settling: simulated frames %d to %d)",
+                  rec.frame_count(), rec.frame_count() / rec.fps, rec.start_frame, rec.start_frame + rec.frame_count() - 1);
   } else {
     std::snprintf(line, sizeof line, "every frame a morph target, %d frames (%.3f s)%s", rec.frame_count(),
                   rec.frame_count() / rec.fps, rec.loop ? ", looping" : "");
@@ -112,7 +113,7 @@ std::string export_file(const fs::path& file, const Recording& rec, const Export
     case FileFormat::kHtml: {
       const auto morphs = morph_animations(rec, options);
       if (format == FileFormat::kHtml) {
-        write_html(file, gltf_bytes(rec, morphs, true), rec.scene_name);
+        write_html(file, gltf_bytes(rec, morphs, true), rec.scene_name, rec.camera);
       } else {
         write_gltf(file, rec, morphs, format == FileFormat::kGlb);
       }

@@ -4,6 +4,8 @@
 #include <optional>
 
 #include "clip/bake.h"
+#include "clip/camera_framing.h"
+#include "clip/camera_motion.h"
 #include "render/color_map.h"
 #include "sim/drive.h"
 #include "world/world.h"
@@ -76,6 +78,9 @@ Recording record(const scene::Scene& scene, const std::filesystem::path& from_ba
   rec.fps = scene.output.fps;
   rec.frame_s = scene.output.frame_period_s();
   rec.loop = scene.output.loop;
+  rec.start_frame = scene.output.start_frame;
+  // Placed on the organs at rest, before any step, as render_clip places it.
+  rec.camera = clip::camera_at(clip::with_cameras_placed(scene, world).camera, 0);
   for (std::size_t o = 0; o < world.organs.size(); ++o) rec.organs.push_back(surface_of(scene.organs[o], world.organs[o]));
   std::optional<clip::BakeReader> bake;
   if (!from_bake.empty()) bake.emplace(from_bake).check_matches(scene, world);

@@ -46,6 +46,13 @@ struct Recording {
   /// The frames are whole cycles after settling (output.loop): the frame after the last is
   /// the first again.
   bool loop = false;
+  /// Frames simulated before frame 0 (output.loop's settling, whole loops): frame f is the
+  /// simulation's frame start_frame + f, at organ time (start_frame + f) x frame_s. unit: frames
+  int start_frame = 0;
+  /// The scene's camera at the clip's first frame, placed as the renderer places it
+  /// (clip::with_cameras_placed: automatic framing for an output.width x output.height
+  /// frame when the scene gives no camera.position), with no motion left.
+  scene::Camera camera;
   std::vector<OrganTrack> organs;
 
   int frame_count() const { return organs.empty() ? 0 : static_cast<int>(organs.front().frames_m.size()); }

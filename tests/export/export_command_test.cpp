@@ -99,6 +99,54 @@ TEST(ExportCommand, TheCompactLoopReportsItsErrorWithinTheBudget) {
   EXPECT_EQ(listing(dir), std::vector<std::string>{"h.glb"}) << "no lock or temporary left";
 }
 
+/// The numbers in the page's camera, in order: position, target, up, fov_deg.
+std::vector<double> page_camera(const fs::path& page) {
+  const std::string text = read_file(page);
+  std::smatch m;
+  const std::regex json(R"(<script id="camera" type="application/json">(.*)</script>)");
+  if (!std::regex_search(text, m, json)) return {};
+  const std::string body = m[1];
+  std::vector<double> v;
+  const std::regex number(R"(-?[0-9][0-9.e+-]*)");
+  for (auto it = std::sregex_iterator(body.begin(), body.end(), number); it != std::sregex_iterator(); ++it) {
+    v.push_back(std::stod(it->str()));
+  }
+  return v;
+}
+
+TEST(ExportCommand, ThePageOpensOnTheCameraTheVideoIsSeenFrom) {
+  const auto dir = scratch("export_page_camera");
+  // The scene's own camera (scenes/heart.yaml: at (0, 0.01, 0.34) looking at the origin, 40 deg).
+  auto r = run(systole() + " export " + kHeart + " -o " + (dir / "h.html").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // The report says which simulated frames the loop is: after whole loops of settling.
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.output, m, std::regex(R"(compact loop of (\d+) frames .*simulated frames (\d+) to (\d+)\))")))
+      << r.output;
+  EXPECT_GT(std::stoi(m[2]), 0);
+  EXPECT_EQ(std::stoi(m[2]) % std::stoi(m[1]), 0) << "settling is whole loops";
+  EXPECT_EQ(std::stoi(m[3]) - std::stoi(m[2]) + 1, std::stoi(m[1]));
+  auto v = page_camera(dir / "h.html");
+  ASSERT_EQ(v.size(), 10u);
+  EXPECT_NEAR(v[0], 0, 1e-12);
+  EXPECT_NEAR(v[1], 0.01, 1e-12);
+  EXPECT_NEAR(v[2], 0.34, 1e-12);
+  EXPECT_NEAR(v[3] * v[3] + v[4] * v[4] + v[5] * v[5], 0, 1e-20);
+  EXPECT_NEAR(v[9], 40, 1e-7);
+  // No camera.position: the page gets the camera Systole's own framing places, as
+  // `validate` reports it (clip::with_cameras_placed).
+  r = run(systole() + " export " + kHeart + " -D camera=auto -o " + (dir / "auto.html").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  v = page_camera(dir / "auto.html");
+  ASSERT_EQ(v.size(), 10u);
+  r = run(systole() + " validate " + kHeart + " -D camera=auto");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_TRUE(std::regex_search(r.output, m, std::regex(R"(camera: frames the organs \(no position given\): at \((.*), (.*), (.*)\) m looking at \((.*), (.*), (.*)\) m)")))
+      << r.output;
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(v[static_cast<std::size_t>(i)], std::stod(m[i + 1]), 1e-5) << i;
+  EXPECT_GT(v[2], v[5] + 0.05) << "on +z of the organs, far enough to frame them";
+}
+
 TEST(ExportCommand, AnIrregularRhythmCannotLoopAndSaysWhy) {
   const auto dir = scratch("export_afib");
   const auto r = run(systole() + " export " + source("scenes/heart-afib.yaml") + " -o " + (dir / "a.glb").string());

@@ -39,7 +39,7 @@ TEST(Usd, EveryFrameIsATimeSampleOfEveryPoint) {
 TEST(Html, ThePageCarriesItsModelAndScriptsAndFetchesNothing) {
   const auto rec = beating_sphere();
   const std::string glb = exporter::gltf_bytes(rec, {exporter::compact_morph(rec.organs[0], rec, {})}, true);
-  const std::string page = exporter::html_page(glb, "sphere <test>");
+  const std::string page = exporter::html_page(glb, "sphere <test>", scene::Camera{});
   EXPECT_NE(page.find("<title>sphere &lt;test&gt;</title>"), std::string::npos);
   for (const char* name : {"\"three\": \"data:text/javascript;base64,", "\"three/addons/loaders/GLTFLoader.js\": \"data:",
                            "\"three/addons/controls/OrbitControls.js\": \"data:",
@@ -55,6 +55,43 @@ TEST(Html, ThePageCarriesItsModelAndScriptsAndFetchesNothing) {
   const std::string encoded = page.substr(body, page.find('\n', body) - body);
   EXPECT_EQ(encoded.size(), (glb.size() + 2) / 3 * 4);
   EXPECT_EQ(encoded.substr(0, 8), "Z2xURgIA") << "base64 of 'glTF' and version 2";
+}
+
+/// The numbers of the page's embedded camera: {"position": [3], "target": [3], "up": [3], "fov_deg"}.
+std::vector<double> page_camera(const std::string& page) {
+  const std::regex json(
+      R"re(<script id="camera" type="application/json">\{"position": \[(.*), (.*), (.*)\], "target": \[(.*), (.*), (.*)\], "up": \[(.*), (.*), (.*)\], "fov_deg": (.*)\}</script>)re");
+  std::smatch m;
+  if (!std::regex_search(page, m, json)) return {};
+  std::vector<double> v;
+  for (std::size_t i = 1; i < m.size(); ++i) v.push_back(std::stod(m[i]));
+  return v;
+}
+
+TEST(Html, ThePageOpensOnTheScenesCameraWithTheRenderersUp) {
+  const auto rec = beating_sphere();
+  const std::string glb = exporter::gltf_bytes(rec, {exporter::compact_morph(rec.organs[0], rec, {})}, true);
+  scene::Camera camera;
+  camera.position_m = Eigen::Vector3d(0.1, 0.2, 0.3);
+  camera.target_m = Eigen::Vector3d(0.01, -0.02, 0.03);
+  camera.up = Eigen::Vector3d(0, 2, 0.5);  // Neither unit nor perpendicular to the view.
+  camera.fov_rad = 35 * M_PI / 180;
+  const auto v = page_camera(exporter::html_page(glb, "sphere", camera));
+  ASSERT_EQ(v.size(), 10u);
+  const Eigen::Vector3d position(v[0], v[1], v[2]), target(v[3], v[4], v[5]), up(v[6], v[7], v[8]);
+  EXPECT_LT((position - camera.position_m).norm(), 1e-9);
+  EXPECT_LT((target - camera.target_m).norm(), 1e-9);
+  EXPECT_NEAR(v[9], 35, 1e-7);
+  // The renderer's up: unit, perpendicular to the view, on the side of the given one.
+  EXPECT_NEAR(up.norm(), 1, 1e-8);
+  EXPECT_NEAR(up.dot((target - position).normalized()), 0, 1e-8);
+  EXPECT_GT(up.dot(camera.up), 0);
+  // An up along the view direction is replaced by a perpendicular one, as render::look_at does.
+  camera.up = camera.target_m - camera.position_m;
+  const auto w = page_camera(exporter::html_page(glb, "sphere", camera));
+  ASSERT_EQ(w.size(), 10u);
+  EXPECT_NEAR(Eigen::Vector3d(w[6], w[7], w[8]).dot(camera.up.normalized()), 0, 1e-8);
+  EXPECT_NEAR(Eigen::Vector3d(w[6], w[7], w[8]).norm(), 1, 1e-8);
 }
 
 }  // namespace
