@@ -38,8 +38,9 @@ OrganMesh kidney(int detail);
 OrganMesh liver(int detail);
 
 /// The diaphragm (procedural/thorax.cpp): a muscular dome 30 cm wide and 23 cm deep rising
-/// 5 cm above its rim, the right side higher, 8 mm thick, a closed solid. Parts:
-/// central_tendon, right_dome, left_dome, muscular_rim, costal_margin (the outer tenth,
+/// 5 cm above its rim, its crest 4 cm in front of the centre, the right side higher, 8 mm
+/// thick, a closed solid. Parts:
+/// central_tendon, right_dome, left_dome, muscular_rim, costal_margin (the outer twentieth,
 /// where it is held by the ribs).
 OrganMesh diaphragm(int detail);
 

@@ -35,14 +35,17 @@ constexpr double kDomeRadiusX = 0.15;     ///< Half-width of the footprint. unit
 constexpr double kDomeRadiusZ = 0.115;    ///< Half-depth of the footprint. unit: m
 constexpr double kDomeHeight = 0.05;      ///< Rise of the dome above its rim. unit: m
 constexpr double kDomeThickness = 0.008;  ///< unit: m
+/// The dome's crest lies this far in front of the footprint's centre: the central tendon,
+/// where the heart rests, is anterior, so the heart sits on the flat of the dome. unit: m
+constexpr double kDomeCrestZ = 0.04;
 
 /// The upper sheet's height at normalized radius rho and x: a paraboloid dome, the right
 /// side (-X, over the liver) higher than the left. unit: m
 double dome_height(double rho, double x) { return kDomeHeight * (1.0 - rho * rho) * (1.0 - 0.15 * x / kDomeRadiusX); }
 
 int diaphragm_part(double rho, double x) {
-  if (rho >= 0.9) return kCostalMargin;
-  if (rho >= 0.62) return kMuscularRim;
+  if (rho >= 0.95) return kCostalMargin;
+  if (rho >= 0.85) return kMuscularRim;
   if (rho < 0.3) return kCentralTendon;
   return x < 0 ? kRightDome : kLeftDome;
 }
@@ -59,13 +62,14 @@ OrganMesh diaphragm(int detail) {
   const int half = 1 + rings * sectors;  // Vertices of one sheet.
   for (int sheet = 0; sheet < 2; ++sheet) {
     const double drop = sheet == 0 ? 0.0 : kDomeThickness;
-    p.emplace_back(0.0, dome_height(0, 0) - drop, 0.0);
+    p.emplace_back(0.0, dome_height(0, 0) - drop, kDomeCrestZ);
     m.vertex_part.push_back(kCentralTendon);
     for (int j = 1; j <= rings; ++j) {
       const double rho = double(j) / rings;
       for (int k = 0; k < sectors; ++k) {
         const double theta = 2.0 * std::numbers::pi * k / sectors;
-        const double x = rho * kDomeRadiusX * std::cos(theta), z = rho * kDomeRadiusZ * std::sin(theta);
+        const double x = rho * kDomeRadiusX * std::cos(theta);
+        const double z = rho * kDomeRadiusZ * std::sin(theta) + kDomeCrestZ * (1.0 - rho * rho);
         p.emplace_back(x, dome_height(rho, x) - drop, z);
         m.vertex_part.push_back(diaphragm_part(rho, x));
       }
