@@ -78,6 +78,19 @@ void prepare(const std::vector<Body>& bodies, Workspace& work) {
   }
 }
 
+/// Each triangle's bounding box. unit: m
+void triangle_boxes(const Eigen::Matrix3Xd& y, const std::vector<Eigen::Vector3i>& triangles, Eigen::Matrix3Xd& lower,
+                    Eigen::Matrix3Xd& upper) {
+  const Eigen::Index n = static_cast<Eigen::Index>(triangles.size());
+  lower.resize(3, n);
+  upper.resize(3, n);
+  for (Eigen::Index t = 0; t < n; ++t) {
+    const Eigen::Vector3i& tri = triangles[t];
+    lower.col(t) = y.col(tri[0]).cwiseMin(y.col(tri[1])).cwiseMin(y.col(tri[2]));
+    upper.col(t) = y.col(tri[0]).cwiseMax(y.col(tri[1])).cwiseMax(y.col(tri[2]));
+  }
+}
+
 /// How far each body's surface moved since the step began. unit: m
 double largest_motion_m(const Workspace::PerBody& pb) {
   if (pb.start.cols() != pb.now.cols() || pb.now.cols() == 0) return 0;
@@ -108,7 +121,13 @@ void detect(const std::vector<Body>& bodies, const PairParams& pair, int a, int 
     double best = std::numeric_limits<double>::infinity();
     ClosestPoint best_point;
     int best_triangle = -1;
+    double limit = r2;
     for (const int* t = first; t != last; ++t) {
+      // The triangle's box first: most candidates of a cell are farther than the reach or
+      // than the best so far, and the box says so for a few comparisons.
+      const Eigen::Vector3d outside =
+          (pb.box_lower.col(*t) - p).cwiseMax(p - pb.box_upper.col(*t)).cwiseMax(0.0);
+      if (outside.squaredNorm() > limit) continue;
       const Eigen::Vector3i& tri = tris[*t];
       const ClosestPoint cp = closest_on_triangle(p, pb.start.col(tri[0]), pb.start.col(tri[1]), pb.start.col(tri[2]));
       const Eigen::Vector3d q =
@@ -116,6 +135,7 @@ void detect(const std::vector<Body>& bodies, const PairParams& pair, int a, int 
       const double d2 = (p - q).squaredNorm();
       if (d2 < best) {  // Strict: of equals, the lowest triangle (candidates ascend).
         best = d2;
+        limit = std::min(limit, d2);
         best_point = cp;
         best_triangle = *t;
       }
@@ -304,14 +324,22 @@ void resolve(const Params& params, std::vector<Body>& bodies, double dt_s, Works
   for (int b = 0; b < count; ++b) {
     if (reach[b] == 0) continue;
     Workspace::PerBody& pb = work.bodies[b];
-    // A static collider's surface never changes: its normals and grid are built once, and
-    // again only when a faster step needs a longer reach.
-    if (!bodies[b].movable && pb.grid_reach_m >= reach[b]) continue;
-    pseudo_normals(pb.start, *bodies[b].triangles, pb.face_normal, pb.vertex_normal);
-    // Cells at least twice the reach and the mean edge: a triangle lands in a few cells.
-    const double built_reach = bodies[b].movable ? reach[b] : 2.0 * reach[b];
-    pb.grid.build(pb.start, *bodies[b].triangles, 2.0 * std::max(built_reach, pb.mean_edge_m), built_reach);
+    // Normals and boxes now; the grid only when the surface has moved more since it was
+    // built than its spare reach covers (fat boxes: a triangle that moved m since is within
+    // reach of p now only if it was within reach + m then). A static collider's is built once.
+    if (bodies[b].movable || pb.face_normal.cols() == 0) {
+      pseudo_normals(pb.start, *bodies[b].triangles, pb.face_normal, pb.vertex_normal);
+      triangle_boxes(pb.start, *bodies[b].triangles, pb.box_lower, pb.box_upper);
+    }
+    const double moved = pb.start.cols() > 0 && pb.built_at.cols() == pb.start.cols() ? (pb.start - pb.built_at).colwise().norm().maxCoeff()
+                                                                : std::numeric_limits<double>::infinity();
+    if (reach[b] + moved <= pb.grid_reach_m) continue;
+    const double built_reach = reach[b] + std::max(reach[b], pb.mean_edge_m);
+    // Cells 1.5 times the reach or the mean edge: a triangle lands in a few cells, a cell
+    // holds a few triangles.
+    pb.grid.build(pb.start, *bodies[b].triangles, 1.5 * std::max(built_reach, pb.mean_edge_m), built_reach);
     pb.grid_reach_m = built_reach;
+    pb.built_at = pb.start;
   }
   work.contacts.clear();
   for (const PairParams& p : params.pairs) {

@@ -87,9 +87,11 @@ struct Workspace {
     std::vector<Eigen::Vector3i> neighbours;  ///< edge_neighbours of its triangles.
     Eigen::Matrix3Xd start, now;              ///< Surface positions at the step's start, now. unit: m
     Eigen::Matrix3Xd face_normal, vertex_normal;
+    Eigen::Matrix3Xd box_lower, box_upper;    ///< Per triangle, its bounding box at the step's start. unit: m
     Eigen::VectorXd vertex_inverse_mass;      ///< Generalized, per surface vertex. unit: 1/kg
     TriangleGrid grid;
     double grid_reach_m = 0;                  ///< The reach the grid was built with. unit: m
+    Eigen::Matrix3Xd built_at;                ///< The surface the grid was built on. unit: m
     double mean_edge_m = 0;
   };
   std::vector<PerBody> bodies;

@@ -5,22 +5,21 @@
 
 namespace systole::sim::contact {
 
-std::uint64_t TriangleGrid::key(long long ix, long long iy, long long iz) const {
-  // 21 bits per axis: two million cells a side, far beyond any scene's extent over its cell.
-  constexpr std::uint64_t mask = (1ull << 21) - 1;
-  return ((static_cast<std::uint64_t>(ix) & mask) << 42) | ((static_cast<std::uint64_t>(iy) & mask) << 21) |
-         (static_cast<std::uint64_t>(iz) & mask);
+std::size_t TriangleGrid::bucket(long long ix, long long iy, long long iz) const {
+  // Teschner et al. 2003, §4: the three large primes, XOR-ed, modulo the table size.
+  const std::uint64_t h = (static_cast<std::uint64_t>(ix) * 73856093ull) ^ (static_cast<std::uint64_t>(iy) * 19349663ull) ^
+                          (static_cast<std::uint64_t>(iz) * 83492791ull);
+  return static_cast<std::size_t>(h % (start_.size() - 1));
 }
 
-std::uint64_t TriangleGrid::key(const Eigen::Vector3d& p) const {
-  return key(static_cast<long long>(std::floor(p.x() * inv_cell_)), static_cast<long long>(std::floor(p.y() * inv_cell_)),
-             static_cast<long long>(std::floor(p.z() * inv_cell_)));
+std::size_t TriangleGrid::bucket(const Eigen::Vector3d& p) const {
+  return bucket(static_cast<long long>(std::floor(p.x() * inv_cell_)), static_cast<long long>(std::floor(p.y() * inv_cell_)),
+                static_cast<long long>(std::floor(p.z() * inv_cell_)));
 }
 
 void TriangleGrid::build(const Eigen::Matrix3Xd& y, const std::vector<Eigen::Vector3i>& triangles, double cell_m,
                          double reach_m) {
   inv_cell_ = 1.0 / cell_m;
-  entries_.clear();
   if (y.cols() == 0) {
     lower_.setZero();
     upper_.setZero();
@@ -28,29 +27,35 @@ void TriangleGrid::build(const Eigen::Matrix3Xd& y, const std::vector<Eigen::Vec
     lower_ = y.rowwise().minCoeff().array() - reach_m;
     upper_ = y.rowwise().maxCoeff().array() + reach_m;
   }
+  // Buckets: about two per triangle, plus the one-past-the-end offset.
+  start_.assign(2 * triangles.size() + 2, 0);
+  entry_bucket_.clear();
+  const auto cell = [&](double v) { return static_cast<long long>(std::floor(v * inv_cell_)); };
+  // Counting sort by bucket: one pass counts, a prefix sum places, a second pass fills in
+  // triangle order, so each bucket's triangles ascend (deterministic, O(entries)).
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const Eigen::Vector3i& tri = triangles[t];
     const Eigen::Vector3d lo = y.col(tri[0]).cwiseMin(y.col(tri[1])).cwiseMin(y.col(tri[2])).array() - reach_m;
     const Eigen::Vector3d hi = y.col(tri[0]).cwiseMax(y.col(tri[1])).cwiseMax(y.col(tri[2])).array() + reach_m;
-    const auto cell = [&](double v) { return static_cast<long long>(std::floor(v * inv_cell_)); };
     for (long long ix = cell(lo.x()); ix <= cell(hi.x()); ++ix)
       for (long long iy = cell(lo.y()); iy <= cell(hi.y()); ++iy)
-        for (long long iz = cell(lo.z()); iz <= cell(hi.z()); ++iz) entries_.emplace_back(key(ix, iy, iz), static_cast<int>(t));
+        for (long long iz = cell(lo.z()); iz <= cell(hi.z()); ++iz) {
+          const std::size_t b = bucket(ix, iy, iz);
+          entry_bucket_.emplace_back(b, static_cast<int>(t));
+          ++start_[b + 1];
+        }
   }
-  std::sort(entries_.begin(), entries_.end());
-  keys_.resize(entries_.size());
-  triangles_.resize(entries_.size());
-  for (std::size_t e = 0; e < entries_.size(); ++e) {
-    keys_[e] = entries_[e].first;
-    triangles_[e] = entries_[e].second;
-  }
+  for (std::size_t b = 1; b < start_.size(); ++b) start_[b] += start_[b - 1];
+  triangles_.resize(entry_bucket_.size());
+  fill_.assign(start_.begin(), start_.end() - 1);
+  for (const auto& [b, t] : entry_bucket_) triangles_[fill_[b]++] = t;
 }
 
 std::pair<const int*, const int*> TriangleGrid::candidates(const Eigen::Vector3d& p) const {
-  const std::uint64_t k = key(p);
-  const auto range = std::equal_range(keys_.begin(), keys_.end(), k);
+  if (start_.size() < 2) return {nullptr, nullptr};
+  const std::size_t b = bucket(p);
   const int* base = triangles_.data();
-  return {base + (range.first - keys_.begin()), base + (range.second - keys_.begin())};
+  return {base + start_[b], base + start_[b + 1]};
 }
 
 }  // namespace systole::sim::contact
