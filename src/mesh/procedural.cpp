@@ -5,7 +5,7 @@
 
 namespace systole::mesh {
 
-std::vector<std::string> procedural_organs() { return {"heart", "anatomical_heart", "lungs", "kidney", "liver"}; }
+std::vector<std::string> procedural_organs() { return {"heart", "anatomical_heart", "lungs", "kidney", "liver", "diaphragm", "chest_wall"}; }
 
 OrganMesh generate_organ(const std::string& name, int detail) {
   if (detail < 1 || detail > 6) {
@@ -17,6 +17,8 @@ OrganMesh generate_organ(const std::string& name, int detail) {
   if (name == "lungs") return procedural::lungs(detail);
   if (name == "kidney") return procedural::kidney(detail);
   if (name == "liver") return procedural::liver(detail);
+  if (name == "diaphragm") return procedural::diaphragm(detail);
+  if (name == "chest_wall") return procedural::chest_wall(detail);
   std::string known;
   for (const std::string& organ : procedural_organs()) known += (known.empty() ? "" : ", ") + organ;
   throw Error(ExitCode::kDataError, "unknown procedural organ '" + name + "' (known: " + known + ")");

@@ -34,6 +34,14 @@ struct Selector {
   Origin origin;
 };
 
+/// A compliant hold of a region towards its rest place (ligaments, the mediastinum):
+/// zero-length springs from each of its particles to where it lies at rest, shifted by offset.
+struct Tether {
+  bool enabled = false;
+  double stiffness_N_per_m = 0;  ///< For the whole region, shared by its particles. unit: N/m
+  Eigen::Vector3d offset_m = Eigen::Vector3d::Zero();  ///< Anchor offset from rest (a preload). unit: m
+};
+
 struct Region {
   std::string name;
   /// Union of selectors. Empty: the part of the same name. Regions are applied in order,
@@ -47,6 +55,7 @@ struct Region {
   /// Pinned regions only: offsets from the rest position over time (a kinematic region,
   /// e.g. a vessel stub moved by breathing). Empty: the region stays at rest.
   std::vector<PathKey> motion;
+  Tether tether;               ///< enabled: held by springs towards its rest place.
   bool has_color = false;
   Color color = Color(0.8, 0.3, 0.3);  ///< Used when has_color; else the organ's material.
   bool has_opacity = false;
@@ -167,6 +176,8 @@ struct Organ {
   /// Values mapped to the ends of the colour map (strain, activation); default by color_by. unit: 1
   Eigen::Vector2d color_range = Eigen::Vector2d(-0.1, 0.1);
   ClipPlane clip;
+  /// A static collider (a rib cage): drawn and touched by the other organs, never simulated.
+  bool collider = false;
   Origin origin;
 };
 

@@ -29,6 +29,7 @@ struct Scene {
   std::vector<Organ> organs;
   std::vector<Interaction> interactions;
   Floor floor;
+  Contact contact;          ///< enabled: organs touch, stepped together (docs/contact.md).
   Solver solver;
   Camera camera;
   std::vector<Light> lights;

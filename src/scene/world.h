@@ -94,6 +94,28 @@ struct Interaction {
   Origin origin;
 };
 
+/// Two organs that touch, with their own thickness and friction (else contact's defaults).
+struct ContactPair {
+  std::vector<std::string> organs;  ///< The two organs' names.
+  bool has_thickness = false;
+  double thickness_m = 0;   ///< Used when has_thickness. unit: m
+  bool has_friction = false;
+  double friction = 0;      ///< Used when has_friction. unit: 1
+  Origin origin;
+};
+
+/// Contact between organs (docs/contact.md): off unless the scene has a `contact` map; then
+/// every organ steps in one coupled step and the pairs' surfaces are kept apart.
+struct Contact {
+  bool enabled = false;
+  double thickness_m = 0.002;     ///< Default gap kept between two surfaces. unit: m
+  double friction = 0.1;          ///< Default Coulomb coefficient. unit: 1
+  int iterations = 4;             ///< Projection passes over the contacts per contact step. unit: 1
+  int substeps = 1;               ///< Contact steps per solver step. unit: 1
+  std::vector<ContactPair> pairs;  ///< Empty: every two organs (not two colliders).
+  Origin origin;
+};
+
 /// A plane the organs cannot pass (a table, the diaphragm's floor).
 struct Floor {
   bool enabled = false;

@@ -73,7 +73,12 @@ Drive drive_params(const scene::Drive& d) {
 }
 
 RegionParams region_params(const scene::Region& r) {
-  return {r.name, drive_params(r.drive), r.stiffness_scale, r.damping_scale, r.pinned, r.detail, path_params(r.motion)};
+  RegionParams p{r.name, drive_params(r.drive), r.stiffness_scale, r.damping_scale, r.pinned, r.detail, path_params(r.motion)};
+  if (r.tether.enabled) {
+    p.tether_stiffness_N_per_m = r.tether.stiffness_N_per_m;
+    p.tether_offset_m = r.tether.offset_m;
+  }
+  return p;
 }
 
 std::vector<RegionParams> region_params(const std::vector<scene::Region>& regions) {
@@ -108,6 +113,31 @@ ModelOptions model_options(const scene::Scene& scene, const std::string& organ_n
     if (scene.interactions[i].organ == organ_name) options.interactions.push_back(interaction_params(scene.interactions[i], i));
   }
   return options;
+}
+
+contact::Params contact_params(const scene::Scene& scene) {
+  contact::Params out;
+  const scene::Contact& c = scene.contact;
+  out.iterations = c.iterations;
+  out.threads = scene.solver.threads;
+  const auto index = [&](const std::string& name) {
+    for (std::size_t i = 0; i < scene.organs.size(); ++i)
+      if (scene.organs[i].name == name) return static_cast<int>(i);
+    return -1;
+  };
+  if (c.pairs.empty()) {
+    for (std::size_t a = 0; a < scene.organs.size(); ++a)
+      for (std::size_t b = a + 1; b < scene.organs.size(); ++b) {
+        if (scene.organs[a].collider && scene.organs[b].collider) continue;
+        out.pairs.push_back({static_cast<int>(a), static_cast<int>(b), c.thickness_m, c.friction});
+      }
+    return out;
+  }
+  for (const scene::ContactPair& p : c.pairs) {
+    out.pairs.push_back({index(p.organs[0]), index(p.organs[1]), p.has_thickness ? p.thickness_m : c.thickness_m,
+                         p.has_friction ? p.friction : c.friction});
+  }
+  return out;
 }
 
 }  // namespace systole::sim

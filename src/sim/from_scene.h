@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "sim/contact/contact.h"
 #include "sim/params.h"
 
 namespace systole::sim {
@@ -22,5 +23,10 @@ OrganParams organ_params(const scene::Organ& organ);
 /// (auto substeps when solver.dt is auto), gravity, floor, seed, the interactions that touch
 /// the organ, and the clip's length in organ time (settling frames included).
 ModelOptions model_options(const scene::Scene& scene, const std::string& organ_name, double dt_s);
+
+/// The scene's contact pairs by organ index (every two organs but two colliders when it
+/// lists none), each with its thickness and friction or the defaults; detection threads are
+/// the solver's.
+contact::Params contact_params(const scene::Scene& scene);
 
 }  // namespace systole::sim

@@ -87,6 +87,35 @@ void add_interactions(Model& m, const std::vector<InteractionParams>& interactio
   }
 }
 
+/// Tethered regions as grabs that never let go: each free particle of the region held by a
+/// zero-length spring of stiffness / particles to its rest place + offset. Every solver
+/// already integrates grabs (XPBD's attachments, the explicit and implicit forces, the
+/// projective matrix), so a tether is one of them with a handle that stays put.
+void add_tethers(Model& m) {
+  for (std::size_t r = 0; r < m.regions.size(); ++r) {
+    const RegionParams& region = m.regions[r];
+    if (region.tether_stiffness_N_per_m <= 0) continue;
+    Grab g;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (int i = 0; i < m.particle_count(); ++i) {
+      if (m.vertex_region.empty() || m.vertex_region[i] != static_cast<int>(r) || m.inverse_mass[i] == 0) continue;
+      g.particles.push_back(i);
+      centre += m.rest_positions.col(i);
+    }
+    if (g.particles.empty()) {
+      throw Error(ExitCode::kDataError, "organ '" + m.name + "': region '" + region.name +
+                                            "' has a tether but no free particle to hold");
+    }
+    centre /= static_cast<double>(g.particles.size());
+    for (int i : g.particles) g.offsets_m.push_back(m.rest_positions.col(i) - centre);
+    const Eigen::Vector3d anchor = centre + region.tether_offset_m;
+    // Held from the start to long after any clip (grab_active spans the keys).
+    g.path = {{0.0, anchor}, {1e12, anchor}};
+    g.compliance_m_per_N = static_cast<double>(g.particles.size()) / region.tether_stiffness_N_per_m;
+    m.grabs.push_back(std::move(g));
+  }
+}
+
 }  // namespace
 
 Eigen::VectorXd lumped_masses(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i>& triangles,
@@ -240,6 +269,7 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
                                                : std::string("body.volume_stiffness > 0")));
   }
   add_interactions(m, options.interactions, parts.interaction_reach_m);
+  add_tethers(m);
   if (options.solver.auto_substeps) {
     // solver.dt: auto - as many substeps as this body's stiffness needs at the world's step.
     m.substeps = std::max(1, static_cast<int>(std::ceil(options.dt_s / step_limits(m).max_substep_s - 1e-9)));

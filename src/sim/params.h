@@ -69,6 +69,10 @@ struct RegionParams {
   bool pinned = false;         ///< Fixed in place (inverse mass 0).
   int detail = 1;              ///< Reduced model only: the region's voxels split into detail^3.
   std::vector<PathKey> motion;  ///< Pinned regions: offsets from rest over time; empty: at rest.
+  /// > 0: the region's particles are held by zero-length springs (sharing this stiffness)
+  /// to their rest places + tether_offset_m: a compliant hold beside `pinned`. unit: N/m
+  double tether_stiffness_N_per_m = 0;
+  Eigen::Vector3d tether_offset_m = Eigen::Vector3d::Zero();  ///< unit: m
 };
 
 /// The material of the whole body.

@@ -36,6 +36,26 @@ double auto_max_step_s(const scene::Scene& scene, double frame_s) {
   return max_step;
 }
 
+/// Contact as the scene asks: every organ of a pair needs a closed surface (a vertex is
+/// inside or outside it).
+void set_up_contact(const scene::Scene& scene, World& w) {
+  if (!scene.contact.enabled) return;
+  w.coupling.enabled = true;
+  w.coupling.substeps = scene.contact.substeps;
+  w.coupling.params = sim::contact_params(scene);
+  for (const sim::contact::PairParams& p : w.coupling.params.pairs) {
+    for (const int b : {p.body_a, p.body_b}) {
+      const OrganBody& body = w.organs[b];
+      if (body.geometry.report.closed() && !body.geometry.mesh.surface.triangles.empty()) continue;
+      std::ostringstream m;
+      m << scene.path << ": contact: organ '" << scene.organs[b].name
+        << "' has an open or non-manifold surface; contact keeps closed surfaces apart (a vertex is inside or "
+           "outside one), so close the mesh or leave the organ out of contact.pairs";
+      throw Error(ExitCode::kDataError, m.str());
+    }
+  }
+}
+
 }  // namespace
 
 World build_world(const scene::Scene& scene) {
@@ -81,9 +101,11 @@ World build_world(const scene::Scene& scene) {
     }
     body.state = sim::initial_state(body.model);
     body.folds = FoldWatch(organ, body.geometry);
+    body.collider = organ.collider;
     if (scene.solver.auto_dt) w.step_reason += " " + body.model.name + ": " + sim::step_limits(body.model).reason + ".";
     w.organs.push_back(std::move(body));
   }
+  set_up_contact(scene, w);
   return w;
 }
 
@@ -122,11 +144,22 @@ void render_positions(const OrganBody& body, Eigen::Matrix3Xd& out) {
 
 void advance_to_frame(World& w, int frame) {
   for (const int target = w.start_frame + frame; w.frames_done < target; ++w.frames_done) {
+    if (w.coupling.enabled) {
+      for (int k = 0; k < w.steps_per_frame; ++k) {
+        coupled_step(w.coupling, w.organs, w.dt_s);
+        for (std::size_t o = 0; w.after_step && o < w.organs.size(); ++o) {
+          if (!w.organs[o].collider) w.after_step(static_cast<int>(o), w.organs[o]);
+        }
+      }
+    }
     for (std::size_t o = 0; o < w.organs.size(); ++o) {
       OrganBody& body = w.organs[o];
-      for (int k = 0; k < w.steps_per_frame; ++k) {
-        sim::step(body.model, body.state, w.dt_s);
-        if (w.after_step) w.after_step(static_cast<int>(o), body);
+      if (body.collider && !w.coupling.enabled) body.state.time_s += w.frame_s;  // Drawn, never simulated.
+      if (!w.coupling.enabled && !body.collider) {
+        for (int k = 0; k < w.steps_per_frame; ++k) {
+          sim::step(body.model, body.state, w.dt_s);
+          if (w.after_step) w.after_step(static_cast<int>(o), body);
+        }
       }
       if (auto problem = sim::diagnose(body.model, body.state)) {
         std::ostringstream m;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mesh/organ.h"
+#include "world/coupled_step.h"
 #include "world/fold_watch.h"
 #include "world/valves.h"
 #include "scene/scene.h"
@@ -25,6 +26,7 @@ struct OrganBody {
   ValveMotion valves;            ///< An anatomical heart's valves, opened by the flow every frame.
   int lattice = 0;               ///< The body's lattice as built (0: full model).
   std::string body_reason;       ///< Why this body (choose_body), for `validate`.
+  bool collider = false;         ///< A static collider: never stepped, touched under contact.
 };
 
 /// The body an organ gets: the generator's myocardium when the mesh has one (the anatomical
@@ -63,6 +65,7 @@ struct World {
   /// resolution, such as the heart sounds' timing (world/sound_sources.h).
   std::function<void(int organ, const OrganBody& body)> after_step;
   Eigen::Matrix3Xd scratch_positions;  ///< The health check's copy of a body's render positions.
+  Coupling coupling;        ///< Contact between the organs (enabled: one coupled step for all).
 };
 
 /// Loads or generates every organ and builds its body. The step is the scene's dt (or, for

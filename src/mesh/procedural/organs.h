@@ -37,4 +37,16 @@ OrganMesh kidney(int detail);
 /// ligament), gallbladder, inferior_vena_cava (a stub at the back of the dome).
 OrganMesh liver(int detail);
 
+/// The diaphragm (procedural/thorax.cpp): a muscular dome 30 cm wide and 23 cm deep rising
+/// 5 cm above its rim, its crest 4 cm in front of the centre, the right side higher, 8 mm
+/// thick, a closed solid. Parts:
+/// central_tendon, right_dome, left_dome, muscular_rim, costal_margin (the outer twentieth,
+/// where it is held by the ribs).
+OrganMesh diaphragm(int detail);
+
+/// The chest wall (procedural/thorax.cpp): a band of ribs 33 cm tall around the lungs,
+/// 12 mm thick, open at the top and bottom (a closed solid: a thick tube), narrowing towards
+/// the apex. Parts: ribs, intercostal (bands between them), sternum (front), spine (back).
+OrganMesh chest_wall(int detail);
+
 }  // namespace systole::mesh::procedural

@@ -137,6 +137,19 @@ ValueSpec<Eigen::Vector2d> value_pair() {
   return spec;
 }
 
+/// `tether`: zero-length springs of a region's particles to their rest places (+ offset).
+ValueSpec<Tether> tether_spec() {
+  return map<Tether>(
+      {
+          field("stiffness", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Tether::stiffness_N_per_m,
+                "Stiffness of the whole region's hold, shared evenly by its particles.")
+              .required(),
+          field("offset", vec3(Dimension::kLength), &Tether::offset_m,
+                "Where the anchor lies from the rest place: a preload, e.g. the heart pulled onto the diaphragm."),
+      },
+      [](const Node&, Tether& t, const std::string&, const Context&) { t.enabled = true; });
+}
+
 ValueSpec<Region> region_spec() {
   return map<Region>(
       {
@@ -156,6 +169,10 @@ ValueSpec<Region> region_spec() {
           field("motion", path_keys("Offset of the region from its rest position."), &Region::motion,
                 "Pinned regions: a prescribed motion (a kinematic region), smoothly interpolated, held after the last "
                 "key."),
+          field("tether", tether_spec(), &Region::tether,
+                "A compliant hold towards the region's rest place (ligaments, the mediastinum), beside rigid `pinned`: "
+                "contact and drives can still move it (docs/contact.md).")
+              .shown_default("none"),
           field<Region, Color>(
               "color", color(),
               [](Region& r) -> Color& {
@@ -175,6 +192,9 @@ ValueSpec<Region> region_spec() {
       },
       [](const Node& node, Region& r, const std::string& path, const Context&) {
         r.origin = node.origin;
+        if (r.tether.enabled && r.pinned)
+          fail(origin_of(node, "tether"), join(path, "tether"),
+               "a pinned region is held rigidly already; give it pinned or tether, not both");
         if (!r.motion.empty() && !r.pinned)
           fail(origin_of(node, "motion"), join(path, "motion"),
                "a prescribed motion needs pinned: true (the region is moved, not simulated)");
@@ -524,6 +544,9 @@ ValueSpec<Organ> organ_spec() {
           field("body", body_spec(), &Organ::body, "The soft body's physical parameters."),
           field("regions", list(region_spec(), 0, 256, "list of regions"), &Organ::regions,
                 "Parts with their own rhythm and stiffness, applied in order."),
+          field("collider", boolean(), &Organ::collider,
+                "A static collider (a rib cage): drawn and touched by the other organs under `contact`, never "
+                "simulated."),
           field("target", target_spec(), &Organ::target,
                 "Motion for `systole tune` to fit the regions' drives to (docs/training.md).")
               .shown_default("none"),

@@ -20,6 +20,7 @@ ValueSpec<Organ> organ_spec();
 ValueSpec<Solver> solver_spec();
 ValueSpec<Interaction> interaction_spec();
 ValueSpec<Floor> floor_spec();
+ValueSpec<Contact> contact_spec();
 ValueSpec<Camera> camera_spec();
 /// A warm key light from the upper left and a cool, dimmer fill from the right, so the
 /// organ reads as a solid even when a scene names no lights.

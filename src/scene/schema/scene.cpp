@@ -9,6 +9,29 @@
 namespace systole::scene::schema {
 namespace {
 
+/// Contact pairs name two organs of the scene, once each, not two colliders.
+void check_contact(const Node& node, const Scene& s) {
+  if (!s.contact.enabled) return;
+  const auto organ = [&](const std::string& name) {
+    return std::find_if(s.organs.begin(), s.organs.end(), [&](const Organ& o) { return o.name == name; });
+  };
+  for (std::size_t i = 0; i < s.contact.pairs.size(); ++i) {
+    const ContactPair& p = s.contact.pairs[i];
+    const std::string path = "contact.pairs[" + std::to_string(i) + "].organs";
+    for (int k = 0; k < 2; ++k)
+      if (organ(p.organs[k]) == s.organs.end())
+        fail(node.find("contact")->find("pairs")->items[i].find("organs")->items[k].origin,
+             path + "[" + std::to_string(k) + "]", "no organ is named '" + p.organs[k] + "'");
+    if (organ(p.organs[0])->collider && organ(p.organs[1])->collider)
+      fail(p.origin, path, "both organs are colliders: neither can move, so they never touch");
+    for (std::size_t j = 0; j < i; ++j) {
+      const ContactPair& q = s.contact.pairs[j];
+      if ((q.organs[0] == p.organs[0] && q.organs[1] == p.organs[1]) || (q.organs[0] == p.organs[1] && q.organs[1] == p.organs[0]))
+        fail(p.origin, path, "the pair is listed twice (also contact.pairs[" + std::to_string(j) + "])");
+    }
+  }
+}
+
 ValueSpec<Scene> scene_spec() {
   auto light = map<Light>({
       field("direction", direction(), &Light::direction, "Direction the light travels."),
@@ -25,6 +48,10 @@ ValueSpec<Scene> scene_spec() {
           field("interactions", list(interaction_spec(), 0, 256, "list of interactions"), &Scene::interactions,
                 "Scripted pokes and grabs on the timeline."),
           field("floor", floor_spec(), &Scene::floor, "A plane the organs cannot pass through.").shown_default("none"),
+          field("contact", contact_spec(), &Scene::contact,
+                "Organs that touch: their surfaces kept apart, every organ stepped in one coupled step "
+                "(docs/contact.md).")
+              .shown_default("none (organs pass through each other)"),
           field("solver", solver_spec(), &Scene::solver, "Time integration."),
           field("camera", camera_spec(), &Scene::camera, "The view."),
           field("lights", list(light, 1, 8, "list of lights"), &Scene::lights, "Directional lights.")
@@ -68,6 +95,7 @@ ValueSpec<Scene> scene_spec() {
             if (s.organs[i].name == s.organs[j].name)
               fail(origin_of(node.find("organs")->items[i], "name"), "organs[" + std::to_string(i) + "].name",
                    "duplicate organ name '" + s.organs[i].name + "' (also organs[" + std::to_string(j) + "])");
+        check_contact(node, s);
         check_overlay(node, s);
         check_audio(node, s);
         const Node* chapters = node.find("chapters");

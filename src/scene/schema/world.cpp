@@ -113,6 +113,52 @@ ValueSpec<Floor> floor_spec() {
       });
 }
 
+ValueSpec<Contact> contact_spec() {
+  const Range thickness = open_closed(0, 0.05), friction = closed(0, 2);
+  auto organs = list(name_text(), 2, 2, "list of two organ names");
+  auto pair = map<ContactPair>(
+      {
+          field("organs", organs, &ContactPair::organs,
+              "The two organs that touch.")
+              .required(),
+          field<ContactPair, double>(
+              "thickness", quantity(Dimension::kLength, thickness),
+              [](ContactPair& p) -> double& {
+                p.has_thickness = true;
+                return p.thickness_m;
+              },
+              "This pair's gap; else `contact.thickness`.")
+              .shown_default("contact.thickness"),
+          field<ContactPair, double>(
+              "friction", number(friction),
+              [](ContactPair& p) -> double& {
+                p.has_friction = true;
+                return p.friction;
+              },
+              "This pair's friction; else `contact.friction`.")
+              .shown_default("contact.friction"),
+      },
+      [](const Node& node, ContactPair& p, const std::string& path, const Context&) {
+        p.origin = node.origin;
+        if (p.organs[0] == p.organs[1]) fail(origin_of(node, "organs"), join(path, "organs"), "an organ does not touch itself here; name two organs");
+      });
+  return map<Contact>(
+      {
+          field("thickness", quantity(Dimension::kLength, thickness), &Contact::thickness_m,
+                "Gap kept between two organs' surfaces (every pair unless it sets its own)."),
+          field("friction", number(friction), &Contact::friction, "Coulomb friction coefficient between two organs."),
+          field("iterations", whole<int>(1, 50), &Contact::iterations, "Projection passes over the contacts per contact step."),
+          field("substeps", whole<int>(1, 50), &Contact::substeps,
+                "Contact steps per solver step (each organ steps dt / substeps between them)."),
+          field("pairs", list(pair, 0, 256, "list of pairs"), &Contact::pairs,
+                "The pairs that touch; empty: every two organs (two colliders never)."),
+      },
+      [](const Node& node, Contact& c, const std::string&, const Context&) {
+        c.enabled = true;
+        c.origin = node.origin;
+      });
+}
+
 ValueSpec<Camera> camera_spec() {
   auto orbit = map<Orbit>(
       {

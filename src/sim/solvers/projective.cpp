@@ -359,4 +359,8 @@ void projective_step(const Model& model, State& s, double dt_s) {
   for (int sub = 0; sub < model.substeps; ++sub) one_step(model, s, c, h);
 }
 
+void projective_restart(State& s) {
+  if (ProjectiveCache* c = s.solver_cache.get<ProjectiveCache>()) c->history_time_s = std::numeric_limits<double>::quiet_NaN();
+}
+
 }  // namespace systole::sim

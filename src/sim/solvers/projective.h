@@ -35,4 +35,10 @@ namespace systole::sim {
 /// model.iterations local/global iterations each.
 void projective_step(const Model& model, State& state, double dt_s);
 
+/// Makes the next step start afresh with backward Euler: after an event that changed the
+/// positions and velocities discontinuously (a contact impulse), BDF2's history is no longer
+/// the state's past, and extrapolating from it would amplify the impulse (a multistep method
+/// restarts after every event; Hairer & Wanner, "Solving ODEs II", §III.1).
+void projective_restart(State& state);
+
 }  // namespace systole::sim

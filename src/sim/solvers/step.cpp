@@ -32,6 +32,10 @@ void step(const Model& model, State& state, double dt_s, const Attachments* coup
   throw Error(ExitCode::kInternal, "sim::step: unknown solver method");
 }
 
+void restart_history(const Model& model, State& state) {
+  if (model.method == Method::kProjective) projective_restart(state);
+}
+
 std::optional<std::string> diagnose(const Model& model, const State& s) {
   for (Eigen::Index i = 0; i < s.x.cols(); ++i) {
     if (!s.x.col(i).allFinite() || !s.v.col(i).allFinite()) {
