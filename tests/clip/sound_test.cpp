@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 // The soundtrack and text tracks of a rendered clip (docs/sound.md): heart sounds land where
 // the simulated ventricles turn (measured here independently, from the particles'
 // velocities every step), irregular beats sound irregular, the video carries AAC / Opus /
