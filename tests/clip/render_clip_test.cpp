@@ -15,24 +15,12 @@
 #include "overlay/cards.h"
 #include "scene/load.h"
 #include "support/run.h"
+#include "support/small_heart.h"
 
 namespace systole::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// A small, cheap beating heart (72 bpm, a coarse lattice, 1/120 s steps) at 160x120.
-std::string heart(const std::string& output, const std::string& extra = "") {
-  return "organs:\n  - name: heart\n    mesh: {procedural: heart, detail: 3}\n"
-         "    body: {mass: 300 g, stiffness: 400 N/m, damping: 10 ms, volume_stiffness: 3 kPa, drag: 2 1/s, lattice: 8}\n"
-         "    regions:\n"
-         "      - {name: left_atrium, drive: {waveform: cardiac, rate: 72 bpm, amplitude: 0.10, systolic_fraction: 0.15}}\n"
-         "      - {name: left_ventricle, drive: {waveform: cardiac, rate: 72 bpm, amplitude: 0.14, delay: 160 ms}}\n"
-         "      - {name: aorta, pinned: true}\n"
-         "solver: {method: xpbd, dt: 1/120 s, substeps: 2}\n"
-         "camera: {position: [0, 0.01, 0.34], target: [0, 0, 0], fov: 40 deg}\n"
-         "output: {width: 160, height: 120, fps: 30, " + output + "}\n" + extra;
-}
 
 /// Renders the listed frames (all when empty) as PNGs into `dir` and reads them back.
 std::vector<Image> render_frames(const std::string& yaml, const fs::path& dir, std::vector<int> frames = {},
@@ -64,14 +52,14 @@ TEST(SlowMotion, FrameKShowsTheOrganAtKOverFpsTimesFactor) {
   const std::vector<int> real_frames = {1, 3, 5, 6, 9};
   std::vector<int> slow_frames;
   for (int k : real_frames) slow_frames.push_back(4 * k);
-  const auto slow = render_frames(heart("duration: 0.5 s, slow_motion: 4"), dir / "slow", slow_frames);
-  const auto real = render_frames(heart("duration: 0.5 s"), dir / "real", real_frames);
+  const auto slow = render_frames(small_heart_scene("duration: 0.5 s, slow_motion: 4"), dir / "slow", slow_frames);
+  const auto real = render_frames(small_heart_scene("duration: 0.5 s"), dir / "real", real_frames);
   for (std::size_t i = 0; i < slow.size(); ++i) {
     // The same steps lead to both: the same bits.
     EXPECT_EQ(slow[i].rgb, real[i].rgb) << "slow-motion frame " << slow_frames[i] << " vs frame " << real_frames[i];
   }
   // And the frames in between are new moments, not repeats.
-  const auto between = render_frames(heart("duration: 0.5 s, slow_motion: 4"), dir / "between", {21, 22});
+  const auto between = render_frames(small_heart_scene("duration: 0.5 s, slow_motion: 4"), dir / "between", {21, 22});
   EXPECT_GT(mean_difference(between[0], slow[2]), 0.0);
   EXPECT_GT(mean_difference(between[1], between[0]), 0.0);
 }
@@ -92,11 +80,11 @@ Seam seam_of(const std::vector<Image>& frames) {
 TEST(Loop, LastFrameFlowsIntoTheFirst) {
   const fs::path dir = scratch("loop");
   // One beat (0.8333 s = 25 frames) after two beats of settling.
-  const auto looped = render_frames(heart("duration: 0.8 s, loop: true, settle_cycles: 2"), dir / "loop");
+  const auto looped = render_frames(small_heart_scene("duration: 0.8 s, loop: true, settle_cycles: 2"), dir / "loop");
   ASSERT_EQ(looped.size(), 25u);
   const Seam on = seam_of(looped);
   // Without the loop: 1.1 s (1.3 beats) from rest; the last frame is mid-beat, far from the first.
-  const auto plain = render_frames(heart("duration: 1.1 s"), dir / "plain");
+  const auto plain = render_frames(small_heart_scene("duration: 1.1 s"), dir / "plain");
   const Seam off = seam_of(plain);
   std::printf("loop on: last->first %.3f levels, largest step %.3f; loop off: last->first %.3f, largest step %.3f\n",
               on.last_to_first, on.largest_step, off.last_to_first, off.largest_step);
@@ -105,7 +93,7 @@ TEST(Loop, LastFrameFlowsIntoTheFirst) {
   EXPECT_GT(off.last_to_first, off.largest_step) << "without loop the seam is a jump bigger than any step";
   EXPECT_LT(on.last_to_first, 0.25 * off.last_to_first);
   // Frame 25 (one past the end) is frame 0 again, nearly exactly once settled.
-  const auto twice = render_frames(heart("duration: 1.6 s, loop: true, settle_cycles: 2"), dir / "twice", {0, 25});
+  const auto twice = render_frames(small_heart_scene("duration: 1.6 s, loop: true, settle_cycles: 2"), dir / "twice", {0, 25});
   EXPECT_LT(mean_difference(twice[0], twice[1]), 0.25 * on.largest_step);
 }
 
@@ -113,8 +101,8 @@ TEST(Captions, ShowOnlyInTheirTimeRangeAndFade) {
   const fs::path dir = scratch("captions");
   // 0.2 s to 0.6 s with 0.1 s fades, at 30 fps: frames 6 (t = 0.2, opacity 0) to 17.
   const std::string caption = "captions:\n  - {text: \"Systole\", from: 0.2 s, to: 0.6 s, fade: 0.1 s, size: 0.12}\n";
-  const auto with = render_frames(heart("duration: 0.8 s", caption), dir / "with");
-  const auto without = render_frames(heart("duration: 0.8 s"), dir / "without");
+  const auto with = render_frames(small_heart_scene("duration: 0.8 s", caption), dir / "with");
+  const auto without = render_frames(small_heart_scene("duration: 0.8 s"), dir / "without");
   ASSERT_EQ(with.size(), without.size());
   std::vector<double> strength;
   for (std::size_t f = 0; f < with.size(); ++f) {
@@ -162,7 +150,7 @@ TEST(TitleCard, OpensTheVideoThenTheClipFollowsExactly) {
   const fs::path dir = scratch("title_card");
   const std::string cards = "cards:\n  - {text: \"The heart\\nsinus rhythm\", duration: 1 s, fade: 0.3 s}\n";
   // Lossless FFV1, so the clip's frames in the video are the PNG frames bit for bit.
-  const auto clip = render_frames(heart("duration: 0.5 s", cards), dir / "png", {}, dir / "clip.mkv");
+  const auto clip = render_frames(small_heart_scene("duration: 0.5 s", cards), dir / "png", {}, dir / "clip.mkv");
   const auto video = encode::test::decode_rgb(dir / "clip.mkv");
   ASSERT_EQ(video.size(), 30u + clip.size()) << "30 card frames, then the clip's 15";
   for (std::size_t f = 0; f < clip.size(); ++f) EXPECT_EQ(video[30 + f].rgb, clip[f].rgb) << "clip frame " << f;
@@ -186,7 +174,7 @@ TEST(TitleCard, OpensTheVideoThenTheClipFollowsExactly) {
 TEST(OutputFormat, TheExtensionOfDashOChoosesTheFormat) {
   const fs::path dir = scratch("format_by_extension");
   const std::string scene = dir / "heart.yaml";
-  write_file(scene, heart("duration: 0.2 s"));
+  write_file(scene, small_heart_scene("duration: 0.2 s"));
   for (const char* ext : {"gif", "webm"}) {
     const fs::path video = dir / (std::string("clip.") + ext);
     const auto r = run(systole() + " render " + scene + " -o " + video.string());
@@ -202,14 +190,14 @@ TEST(OutputFormat, TheExtensionOfDashOChoosesTheFormat) {
 TEST(OutputFormat, AGifFasterThan50FpsIsRefusedBeforeAnyWork) {
   const fs::path dir = scratch("gif_too_fast");
   const std::string scene = dir / "heart.yaml";
-  write_file(scene, heart("duration: 0.2 s"));
+  write_file(scene, small_heart_scene("duration: 0.2 s"));
   write_file(dir / "clip.gif", "earlier");
   const auto r = run(systole() + " render " + scene + " -D output.fps=60 -o " + (dir / "clip.gif").string());
   EXPECT_EQ(r.exit_code, 65) << r.output;
   EXPECT_NE(r.output.find("GIF encoder: fps 60"), std::string::npos) << r.output;
   EXPECT_EQ(read_file(dir / "clip.gif"), "earlier");
   // In the scene, the same mistake names the line.
-  std::string yaml = heart("duration: 0.2 s, format: gif");
+  std::string yaml = small_heart_scene("duration: 0.2 s, format: gif");
   yaml.replace(yaml.find("fps: 30"), 7, "fps: 60");
   write_file(scene, yaml);
   const auto v = run(systole() + " validate " + scene);
@@ -219,7 +207,7 @@ TEST(OutputFormat, AGifFasterThan50FpsIsRefusedBeforeAnyWork) {
 }
 
 TEST(OutputFormat, TheDefaultPathTakesTheFormatsExtension) {
-  const auto s = scene::load_from_string(heart("duration: 0.2 s, format: webm"), "teaching.yaml", {});
+  const auto s = scene::load_from_string(small_heart_scene("duration: 0.2 s, format: webm"), "teaching.yaml", {});
   EXPECT_EQ(clip::default_video_path(s), fs::path("out/teaching.webm"));
   EXPECT_EQ(clip::video_format(s, "elsewhere/clip.gif"), encode::VideoFormat::kGif) << "the extension wins";
   EXPECT_EQ(clip::video_format(s, "elsewhere/clip"), encode::VideoFormat::kWebm) << "no extension: the scene's format";
@@ -237,7 +225,7 @@ TEST(OutputFormat, TheDefaultPathTakesTheFormatsExtension) {
 TEST(OutputFormat, EveryFormatIsTheSameBytesOnEveryRun) {
   const fs::path dir = scratch("format_determinism");
   // With sound (AAC, Opus, FLAC: one thread, zeroed padding), a subtitle track and chapters.
-  const std::string yaml = heart("duration: 0.3 s, loop: false, slow_motion: 2",
+  const std::string yaml = small_heart_scene("duration: 0.3 s, loop: false, slow_motion: 2",
                                  "captions:\n  - {text: \"Same bits\", from: 0.1 s, to: 0.5 s, fade: 0.1 s}\n"
                                  "chapters:\n  - {title: \"One\", at: 0.2 s}\n"
                                  "audio: {heart: {s3: {}, murmur: {}}, click: {rate: 90 bpm}}\n");

@@ -14,6 +14,7 @@
 #include "clip/text_tracks.h"
 #include "scene/load.h"
 #include "support/run.h"
+#include "support/small_heart.h"
 #include "world/world.h"
 
 namespace systole::test {
@@ -23,18 +24,6 @@ namespace fs = std::filesystem;
 
 bool have(const char* tool) { return run(std::string("command -v ") + tool).exit_code == 0; }
 
-/// A small beating heart at 160x120 (as render_clip_test's), with audio and text tracks.
-std::string small_heart(const std::string& output, const std::string& extra) {
-  return "organs:\n  - name: heart\n    mesh: {procedural: heart, detail: 3}\n"
-         "    body: {mass: 300 g, stiffness: 400 N/m, damping: 10 ms, volume_stiffness: 3 kPa, drag: 2 1/s, lattice: 8}\n"
-         "    regions:\n"
-         "      - {name: left_atrium, drive: {waveform: cardiac, rate: 72 bpm, amplitude: 0.10, systolic_fraction: 0.15}}\n"
-         "      - {name: left_ventricle, drive: {waveform: cardiac, rate: 72 bpm, amplitude: 0.14, delay: 160 ms}}\n"
-         "      - {name: aorta, pinned: true}\n"
-         "solver: {method: xpbd, dt: 1/120 s, substeps: 2}\n"
-         "camera: {position: [0, 0.01, 0.34], target: [0, 0, 0], fov: 40 deg}\n"
-         "output: {width: 160, height: 120, fps: 30, " + output + "}\n" + extra;
-}
 
 const std::string kTracks =
     "audio: {heart: {s3: {}, murmur: {shape: diamond}}, click: {rate: 60 bpm}}\n"
@@ -223,7 +212,7 @@ TEST(Sound, AfibBeatToBeatIntervalsAreTheSimulatedVentriclesIntervals) {
 TEST(Sound, Mp4CarriesAacAndCaptionCuesAndChaptersAndLastsAsLongAsThePictures) {
   if (!have("ffprobe")) GTEST_SKIP() << "ffprobe is not installed";
   const fs::path dir = scratch("mp4_tracks");
-  write_file(dir / "h.yaml", small_heart("duration: 1.4 s", kTracks));
+  write_file(dir / "h.yaml", small_heart_scene("duration: 1.4 s", kTracks));
   const fs::path video = dir / "h.mp4";
   const auto r = run(systole() + " render " + (dir / "h.yaml").string() + " -o " + video.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -254,7 +243,7 @@ TEST(Sound, Mp4CarriesAacAndCaptionCuesAndChaptersAndLastsAsLongAsThePictures) {
 TEST(Sound, WebmCarriesOpusAndWebVttAndMkvFlacAndSubRip) {
   if (!have("ffprobe")) GTEST_SKIP() << "ffprobe is not installed";
   const fs::path dir = scratch("webm_mkv_tracks");
-  write_file(dir / "h.yaml", small_heart("duration: 0.6 s", kTracks));
+  write_file(dir / "h.yaml", small_heart_scene("duration: 0.6 s", kTracks));
   for (const auto& [ext, audio, text] : {std::tuple{"webm", "opus", "webvtt"}, std::tuple{"mkv", "flac", "subrip"}}) {
     const fs::path video = dir / (std::string("h.") + ext);
     const auto r = run(systole() + " render " + (dir / "h.yaml").string() + " -o " + video.string());
@@ -268,7 +257,7 @@ TEST(Sound, WebmCarriesOpusAndWebVttAndMkvFlacAndSubRip) {
 
 TEST(Sound, WavIsTheSoundtrackAloneAndGifHasNone) {
   const fs::path dir = scratch("wav_gif");
-  write_file(dir / "h.yaml", small_heart("duration: 0.6 s", kTracks));
+  write_file(dir / "h.yaml", small_heart_scene("duration: 0.6 s", kTracks));
   const auto r = run(systole() + " render " + (dir / "h.yaml").string() + " -o " + (dir / "h.gif").string() + " --wav " +
                      (dir / "h.wav").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -281,7 +270,7 @@ TEST(Sound, WavIsTheSoundtrackAloneAndGifHasNone) {
   const auto v = run(systole() + " validate " + (dir / "h.yaml").string() + " -D output.format=gif");
   EXPECT_NE(v.output.find("a GIF has no sound"), std::string::npos) << v.output;
   // A scene without audio: --wav is refused, nothing written.
-  write_file(dir / "quiet.yaml", small_heart("duration: 0.2 s", ""));
+  write_file(dir / "quiet.yaml", small_heart_scene("duration: 0.2 s", ""));
   const auto q = run(systole() + " render " + (dir / "quiet.yaml").string() + " -o " + (dir / "q.mp4").string() + " --wav " +
                      (dir / "q.wav").string());
   EXPECT_EQ(q.exit_code, 64) << q.output;
