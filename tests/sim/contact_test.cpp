@@ -1,4 +1,4 @@
-// ctest-labels: no-sanitizers
+// ctest-labels: slow-under-sanitizers
 // Contact between bodies (sim/contact/): the geometry kernels against brute force, the
 // broad phase against every triangle, and the properties of the response - surfaces kept
 // apart, no energy gained, no force once apart, the same bits at 1 and 2 threads, and hard

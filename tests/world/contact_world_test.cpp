@@ -1,4 +1,4 @@
-// ctest-labels: no-sanitizers
+// ctest-labels: slow-under-sanitizers
 // The chest as one system (scenes/chest.yaml, docs/contact.md): the organs step together,
 // no vertex of one organ goes deeper into another than the contact thickness at any frame,
 // the coupled step gives the same bits at 1 and 2 threads, and a collider never moves.
