@@ -15,7 +15,7 @@
 #include "overlay/cards.h"
 #include "scene/load.h"
 #include "support/run.h"
-#include "support/small_heart.h"
+#include "support/small_heart_clip.h"
 
 namespace systole::test {
 namespace {

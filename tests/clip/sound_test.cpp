@@ -14,7 +14,7 @@
 #include "clip/text_tracks.h"
 #include "scene/load.h"
 #include "support/run.h"
-#include "support/small_heart.h"
+#include "support/small_heart_clip.h"
 #include "world/world.h"
 
 namespace systole::test {
