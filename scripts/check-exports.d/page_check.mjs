@@ -69,20 +69,9 @@ async function attempt(flags) {
                                               error: window.systole.error }));
     if (!state.ready) return { webgl, flags, error: state.error, logs };
     // Two moments of the loop, paused: the first frame and 40 % into it.
-    const capture = (t) => page.evaluate((t) => {
-      window.systole.pause();
-      window.systole.seek(t);
-      const canvas = document.getElementById('view');
-      const copy = document.createElement('canvas');
-      copy.width = canvas.width;
-      copy.height = canvas.height;
-      const g = copy.getContext('2d');
-      g.drawImage(canvas, 0, 0);
-      return Array.from(g.getImageData(0, 0, copy.width, copy.height).data);
-    }, t);
-    const a = await capture(0);
+    const a = (await canvas_at(page, 0)).data;
     await page.screenshot({ path: screenshot.replace(/\.png$/, '-t0.png') });
-    const b = await capture(state.duration * 0.4);
+    const b = (await canvas_at(page, state.duration * 0.4)).data;
     await page.screenshot({ path: screenshot });
     const background = [a[0], a[1], a[2]];
     let organ = 0, differ = 0;
@@ -142,14 +131,9 @@ function mismatch(a, b) {
   return { one_minus_iou: union ? 1 - both / union : 1, page: na, systole: nb };
 }
 
-/// The page at loop frame match_frame on its scene camera against Systole's frame, and the two controls.
-async function compare(page, state_duration) {
-  const frame = await png_pixels(page, match);
-  const other = await png_pixels(page, control);
-  // The canvas is the window less the 44 px control bar.
-  await page.setViewportSize({ width: frame.width, height: frame.height + 44 });
-  const t_match = match_frame * state_duration / loop_frames;
-  const shot = (t = t_match) => page.evaluate((t) => {
+/// The page paused at t seconds of its loop: the canvas' size, its RGBA pixels, and how it was framed.
+function canvas_at(page, t) {
+  return page.evaluate((t) => {
     window.systole.pause();
     window.systole.seek(t);
     const canvas = document.getElementById('view');
@@ -161,6 +145,16 @@ async function compare(page, state_duration) {
     return { width: copy.width, height: copy.height, framed_by: window.systole.framed_by,
              data: Array.from(g.getImageData(0, 0, copy.width, copy.height).data) };
   }, t);
+}
+
+/// The page at loop frame match_frame on its scene camera against Systole's frame, and the two controls.
+async function compare(page, state_duration) {
+  const frame = await png_pixels(page, match);
+  const other = await png_pixels(page, control);
+  // The canvas is the window less the 44 px control bar.
+  await page.setViewportSize({ width: frame.width, height: frame.height + 44 });
+  const t_match = match_frame * state_duration / loop_frames;
+  const shot = (t = t_match) => canvas_at(page, t);
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));  // The resize has run.
   const own = await shot();
   await page.screenshot({ path: screenshot.replace(/\.png$/, '-match.png') });

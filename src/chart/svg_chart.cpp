@@ -5,23 +5,9 @@
 #include <sstream>
 
 #include "chart/axis.h"
+#include "common/xml.h"
 
 namespace systole::chart {
-
-namespace {
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
-}
-
-}  // namespace
 
 std::string svg_line_chart(const std::string& title, const std::string& x_label, const std::string& y_label,
                            const std::vector<double>& x, const std::vector<SvgSeries>& series) {
@@ -43,7 +29,7 @@ std::string svg_line_chart(const std::string& title, const std::string& x_label,
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
     << width << " " << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  o << "<text x=\"" << width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << escape(title) << "</text>\n";
+  o << "<text x=\"" << width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << xml_text(title) << "</text>\n";
   for (double v : ticks(Axis{x_label, Scale::kLinear, x_lo, x_hi})) {
     o << "<line x1=\"" << px(v) << "\" y1=\"" << top << "\" x2=\"" << px(v) << "\" y2=\"" << height - bottom
       << "\" stroke=\"#e4e4e4\"/>\n<text x=\"" << px(v) << "\" y=\"" << height - bottom + 16 << "\" text-anchor=\"middle\">" << tick_text(v) << "</text>\n";
@@ -54,8 +40,8 @@ std::string svg_line_chart(const std::string& title, const std::string& x_label,
   }
   o << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << width - left - right << "\" height=\"" << height - top - bottom
     << "\" fill=\"none\" stroke=\"#444\"/>\n";
-  o << "<text x=\"" << (left + width - right) / 2 << "\" y=\"" << height - 12 << "\" text-anchor=\"middle\">" << escape(x_label) << "</text>\n";
-  o << "<text transform=\"translate(16 " << (top + height - bottom) / 2 << ") rotate(-90)\" text-anchor=\"middle\">" << escape(y_label) << "</text>\n";
+  o << "<text x=\"" << (left + width - right) / 2 << "\" y=\"" << height - 12 << "\" text-anchor=\"middle\">" << xml_text(x_label) << "</text>\n";
+  o << "<text transform=\"translate(16 " << (top + height - bottom) / 2 << ") rotate(-90)\" text-anchor=\"middle\">" << xml_text(y_label) << "</text>\n";
   for (std::size_t k = 0; k < series.size(); ++k) {
     const SvgSeries& s = series[k];
     o << "<polyline fill=\"none\" stroke=\"" << s.color << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << " points=\"";
@@ -66,7 +52,7 @@ std::string svg_line_chart(const std::string& title, const std::string& x_label,
     const double ly = top + 16 + 16 * double(k);
     o << "<line x1=\"" << left + 10 << "\" y1=\"" << ly - 4 << "\" x2=\"" << left + 34 << "\" y2=\"" << ly - 4 << "\" stroke=\"" << s.color
       << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n<text x=\"" << left + 40 << "\" y=\"" << ly << "\">"
-      << escape(s.name) << "</text>\n";
+      << xml_text(s.name) << "</text>\n";
   }
   o << "</svg>\n";
   return o.str();

@@ -8,6 +8,7 @@
 #include "export/viewer_assets.h"
 #include "export/write_file.h"
 #include "render/camera_matrices.h"
+#include "common/xml.h"
 
 namespace systole::exporter {
 namespace {
@@ -184,18 +185,6 @@ std::string loader_for_import_map() {
   return text;
 }
 
-std::string escape_html(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
-
 }  // namespace
 
 const std::string& embedded_script(const std::string& name) {
@@ -224,7 +213,7 @@ std::string html_page(const std::string& glb, const std::string& title, const sc
   page += "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
   page += "<meta name=\"generator\" content=\"Systole " SYSTOLE_VERSION "\">\n";
-  page += "<title>" + escape_html(title) + "</title>\n<style>" + std::string(kStyle) + "</style>\n";
+  page += "<title>" + xml_text(title) + "</title>\n<style>" + std::string(kStyle) + "</style>\n";
   page += "<!-- three.js r160 (MIT licence, three.js authors): third_party/three/ in Systole's sources -->\n";
   page += "<script type=\"importmap\">\n{\"imports\": {\n";
   page += "  \"three\": \"" + module_url(embedded_script("three.module.min.js")) + "\",\n";
@@ -235,7 +224,7 @@ std::string html_page(const std::string& glb, const std::string& title, const sc
   page += "<div id=\"bar\"><button id=\"play\">Pause</button>\n";
   page += "<label>speed <input id=\"speed\" type=\"range\" min=\"0.1\" max=\"2\" step=\"0.05\" value=\"1\"></label>";
   page += "<span id=\"speed-text\">1.00&times;</span><span id=\"time\"></span><span id=\"error\"></span>";
-  page += "<span id=\"title\">" + escape_html(title) + " &middot; drag to orbit, scroll to zoom</span></div>\n";
+  page += "<span id=\"title\">" + xml_text(title) + " &middot; drag to orbit, scroll to zoom</span></div>\n";
   page += "<script id=\"camera\" type=\"application/json\">" + camera_json(camera) + "</script>\n";
   page += "<script id=\"model\" type=\"application/octet-stream\">\n" + base64(glb) + "\n</script>\n";
   page += "<script type=\"module\">" + std::string(kViewer) + "</script>\n</body>\n</html>\n";
