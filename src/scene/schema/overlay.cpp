@@ -39,9 +39,13 @@ ValueSpec<std::vector<std::string>> region_names() {
   spec.read = [name](const Node& node, std::vector<std::string>& out, const std::string& path, const Context& ctx) {
     out.clear();
     if (node.kind == Node::Kind::kScalar && node.scalar == "all") return;
-    if (node.kind != Node::Kind::kList || node.items.empty() || node.items.size() > 256)
+    if (node.kind != Node::Kind::kList)
       fail(node.origin, path,
            "expected all or a list of region names, e.g. [left_ventricle, aorta]; got " + node.describe());
+    if (node.items.empty() || node.items.size() > 256)  // Empty stands for `all`, so it is not "no labels".
+      fail(node.origin, path,
+           "expected 1..256 region names, got " + std::to_string(node.items.size()) +
+               " (to show no labels, leave out overlay.labels)");
     for (std::size_t i = 0; i < node.items.size(); ++i) {
       std::string n;
       name.read(node.items[i], n, path + "[" + std::to_string(i) + "]", ctx);
