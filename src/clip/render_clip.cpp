@@ -322,7 +322,9 @@ class ClipFrames {
     // The drawn triangles' normals: a simplified mesh is shaded as it is drawn (and a
     // vertex no drawn triangle uses is never seen).
     mesh::vertex_normals(x, static_cast<int>(n), surfaces_.drawn[o], buf.normals.data());
-    if (surfaces_.dynamic[o]) map_colors(*surfaces_.dynamic[o], world_.organs[o], scene_.organs[o], f / out_.fps, buf);
+    // The organ time frame f shows: after a loop's settling frames, slowed by slow_motion.
+    const double organ_time_s = (out_.start_frame + f) * out_.frame_period_s();
+    if (surfaces_.dynamic[o]) map_colors(*surfaces_.dynamic[o], world_.organs[o], scene_.organs[o], organ_time_s, buf);
     frame_positions_[o] = &buf.mesh_positions;
   }
 

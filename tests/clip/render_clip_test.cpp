@@ -64,6 +64,24 @@ TEST(SlowMotion, FrameKShowsTheOrganAtKOverFpsTimesFactor) {
   EXPECT_GT(mean_difference(between[1], between[0]), 0.0);
 }
 
+TEST(SlowMotion, ActivationColoursFollowOrganTimeNotVideoTime) {
+  // color_by activation colours each region by its drive at the organ time the frame shows:
+  // slowed 4x, frame 4k is organ time k / 30 s, so it matches the real-time frame k bit for
+  // bit (colouring by video time, frame 4k would show the beat four times further on).
+  const fs::path dir = scratch("slow_activation");
+  std::string slow_yaml = small_heart_scene("duration: 0.5 s, slow_motion: 4");
+  std::string real_yaml = small_heart_scene("duration: 0.5 s");
+  for (std::string* yaml : {&slow_yaml, &real_yaml}) {
+    const std::string organ = "  - name: heart\n";
+    yaml->insert(yaml->find(organ) + organ.size(), "    color_by: activation\n");
+  }
+  const auto slow = render_frames(slow_yaml, dir / "slow", {8, 20});
+  const auto real = render_frames(real_yaml, dir / "real", {2, 5});
+  EXPECT_EQ(slow[0].rgb, real[0].rgb) << "slow-motion frame 8 vs frame 2";
+  EXPECT_EQ(slow[1].rgb, real[1].rgb) << "slow-motion frame 20 vs frame 5";
+  EXPECT_GT(mean_difference(real[0], real[1]), 0.0) << "the colours change with the beat";
+}
+
 /// How far the last frame is from the first, against the largest step between neighbours.
 struct Seam {
   double last_to_first = 0;      ///< unit: levels
