@@ -30,7 +30,7 @@
 #include "render/color_map.h"
 #include "render/fxaa.h"
 #include "render/renderer.h"
-#include "sim/drive.h"
+#include "sim/model.h"
 #include "world/world.h"
 
 namespace systole::clip {
@@ -69,19 +69,13 @@ struct DynamicColors {
 };
 
 /// Fills buf.colors from the organ's colour map at time t_s (unit: s).
-void map_colors(const DynamicColors& dynamic, const world::OrganBody& body, const scene::Organ& organ, double t_s,
-                SurfaceBuffers& buf) {
+void map_colors(const DynamicColors& dynamic, const world::OrganBody& body, double t_s, SurfaceBuffers& buf) {
   if (dynamic.by == scene::ColorBy::kStrain) {
     dynamic.strain->compute(buf.mesh_positions, buf.values);
   } else {
     // Activation phi(t) of each vertex's region; 0 for the undriven body.
-    static const std::vector<double> kRegular;
-    const auto& beats = body.model.beat_boundaries;
     const std::vector<int>& vertex_region = body.geometry.vertex_region;
-    buf.region_phi.resize(organ.regions.size());
-    for (std::size_t r = 0; r < organ.regions.size(); ++r) {
-      buf.region_phi[r] = sim::activation(body.model.regions[r].drive, t_s, body.model.ramp_s, r < beats.size() ? beats[r] : kRegular);
-    }
+    sim::region_activations(body.model, t_s, buf.region_phi);
     buf.values.resize(vertex_region.size());
     for (std::size_t v = 0; v < vertex_region.size(); ++v) {
       buf.values[v] = vertex_region[v] >= 0 ? buf.region_phi[static_cast<std::size_t>(vertex_region[v])] : 0.0;
@@ -322,9 +316,7 @@ class ClipFrames {
     // The drawn triangles' normals: a simplified mesh is shaded as it is drawn (and a
     // vertex no drawn triangle uses is never seen).
     mesh::vertex_normals(x, static_cast<int>(n), surfaces_.drawn[o], buf.normals.data());
-    // The organ time frame f shows: after a loop's settling frames, slowed by slow_motion.
-    const double organ_time_s = (out_.start_frame + f) * out_.frame_period_s();
-    if (surfaces_.dynamic[o]) map_colors(*surfaces_.dynamic[o], world_.organs[o], scene_.organs[o], organ_time_s, buf);
+    if (surfaces_.dynamic[o]) map_colors(*surfaces_.dynamic[o], world_.organs[o], out_.organ_time_s(f), buf);
     frame_positions_[o] = &buf.mesh_positions;
   }
 

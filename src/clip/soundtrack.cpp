@@ -68,7 +68,7 @@ ClipClock clip_clock(const scene::Scene& scene, int first_frame, int card_frames
   ClipClock c;
   c.frame_s = scene.output.frame_period_s();
   c.fps = scene.output.fps;
-  c.organ_start_s = (scene.output.start_frame + first_frame) * c.frame_s;
+  c.organ_start_s = scene.output.organ_time_s(first_frame);
   c.cards_s = first_frame == 0 ? card_frames / c.fps : 0.0;
   return c;
 }

@@ -7,7 +7,7 @@
 #include "clip/camera_framing.h"
 #include "clip/camera_motion.h"
 #include "render/color_map.h"
-#include "sim/drive.h"
+#include "sim/model.h"
 #include "world/world.h"
 
 namespace systole::exporter {
@@ -39,17 +39,6 @@ OrganTrack surface_of(const scene::Organ& organ, const world::OrganBody& body) {
   }
   for (const auto& region : organ.regions) t.region_names.push_back(region.name);
   return t;
-}
-
-/// Each region's activation at organ time t_s, as color_by activation computes it (clip/render_clip.cpp).
-std::vector<double> region_activation(const world::OrganBody& body, double t_s) {
-  static const std::vector<double> kRegular;
-  const auto& beats = body.model.beat_boundaries;
-  std::vector<double> phi(body.model.regions.size());
-  for (std::size_t r = 0; r < phi.size(); ++r) {
-    phi[r] = sim::activation(body.model.regions[r].drive, t_s, body.model.ramp_s, r < beats.size() ? beats[r] : kRegular);
-  }
-  return phi;
 }
 
 }  // namespace
@@ -92,8 +81,7 @@ Recording record(const scene::Scene& scene, const std::filesystem::path& from_ba
   for (int f = 0; f < frames; ++f) {
     if (!bake) world::advance_to_frame(world, f);
     // The organ time of clip frame f, where the world stepped it (world::advance_to_frame).
-    // The renderer colours by f / fps, which is the same without a loop or slow motion.
-    const double t_s = (scene.output.start_frame + f) * rec.frame_s;
+    const double t_s = scene.output.organ_time_s(f);
     for (std::size_t o = 0; o < world.organs.size(); ++o) {
       auto& track = rec.organs[o];
       if (bake) {
@@ -101,7 +89,7 @@ Recording record(const scene::Scene& scene, const std::filesystem::path& from_ba
       } else {
         world::render_positions(world.organs[o], track.frames_m[static_cast<std::size_t>(f)]);
       }
-      track.activation[static_cast<std::size_t>(f)] = region_activation(world.organs[o], t_s);
+      sim::region_activations(world.organs[o].model, t_s, track.activation[static_cast<std::size_t>(f)]);
     }
   }
   return rec;

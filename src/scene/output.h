@@ -55,6 +55,9 @@ struct Output {
   /// Organ time between two frames: 1 / (fps * slow_motion), or for a loop duration /
   /// frame_count() exactly (the playback rate then differs by less than 1 / (2 frames)). unit: s
   double frame_period_s() const;
+  /// The organ time clip frame k shows: (start_frame + k) * frame_period_s(), after a
+  /// loop's settling frames, slowed by slow_motion. unit: s
+  double organ_time_s(int frame) const;
 };
 
 }  // namespace systole::scene

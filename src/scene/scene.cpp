@@ -12,6 +12,8 @@ double Output::frame_period_s() const {
   return 1.0 / (fps * slow_motion);
 }
 
+double Output::organ_time_s(int frame) const { return (start_frame + frame) * frame_period_s(); }
+
 std::vector<PixelRect> view_rectangles(int width, int height, int view_count) {
   std::vector<PixelRect> rects;
   if (view_count < 1) return rects;

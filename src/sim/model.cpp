@@ -304,4 +304,13 @@ Model with_regions(const Model& base, const std::vector<RegionParams>& regions) 
   return m;
 }
 
+void region_activations(const Model& model, double t_s, std::vector<double>& phi) {
+  static const std::vector<double> kRegular;
+  phi.resize(model.regions.size());
+  for (std::size_t r = 0; r < phi.size(); ++r) {
+    phi[r] = activation(model.regions[r].drive, t_s, model.ramp_s,
+                        r < model.beat_boundaries.size() ? model.beat_boundaries[r] : kRegular);
+  }
+}
+
 }  // namespace systole::sim

@@ -155,6 +155,10 @@ Model with_method(const Model& base, Method method);
 double boundary_blend(const std::vector<RegionParams>& regions, int region_a, int region_b,
                       double RegionParams::*scale);
 
+/// Every region's activation phi(t) at organ time t_s (its drive, the model's ramp, its
+/// seeded beats), into phi (one per region): what `color_by: activation` shows.
+void region_activations(const Model& model, double t_s, std::vector<double>& phi);
+
 /// Builds the body of one organ, every surface vertex a particle. Throws Error(kDataError) when an interaction touches no
 /// particle (naming it and where it was written).
 Model build_model(const OrganParams& organ, const mesh::OrganGeometry& geometry, const ModelOptions& options);
