@@ -6,19 +6,20 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string_view>
 
 #include "common/atomic_output.h"
 #include "common/error.h"
 #include "encode/av_error.h"
 #include "encode/gif_writer.h"
+#include "encode/text_streams.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/channel_layout.h>
 #include <libavutil/dict.h>
-#include <libavutil/mem.h>
 #include <libavutil/frame.h>
 #include <libavutil/opt.h>
 #include <libavutil/rational.h>
@@ -155,12 +156,12 @@ struct VideoWriter::Impl {
   AVStream* audio_stream = nullptr;
   AVFrame* audio_frame = nullptr;
   std::int64_t audio_sent = 0;  // Samples sent; the next audio frame's pts (unit: 1/rate).
+  std::optional<detail::SubtitleStream> subtitles;  // The captions (settings.subtitles), if any.
 
   Impl(const std::filesystem::path& target, const VideoSettings& s)
       : settings(s), codec(codec_of(s.format)), output(target) {}
 
   ~Impl() {
-    for (AVPacket*& p : subtitle_packets) av_packet_free(&p);
     av_frame_free(&audio_frame);
     avcodec_free_context(&audio_encoder);
     sws_freeContext(sws);
@@ -180,11 +181,6 @@ struct VideoWriter::Impl {
   void open_converter();
   void open_file();
   void open_audio();
-  void add_subtitles();
-  void write_subtitles();
-  AVStream* subtitle_stream = nullptr;
-  std::vector<AVPacket*> subtitle_packets;
-  void add_chapters();
   void send(const AVFrame* f);
   void send_audio_until(std::int64_t sample);
   void write_packets(AVCodecContext* from, AVStream* to);
@@ -206,11 +202,10 @@ void VideoWriter::Impl::open() {
   open_encoder(av_codec);
   open_converter();
   if (!settings.audio.empty()) open_audio();
-  if (!settings.subtitles.empty()) add_subtitles();
-  add_chapters();
+  if (!settings.subtitles.empty()) subtitles.emplace(format, codec.subtitle_encoder, settings.subtitles, codec.label);
+  detail::add_chapters(format, settings.chapters, codec.label);
   open_file();
-  // Every cue at once: the muxer's interleaving queue holds each until the frames reach it.
-  if (!settings.subtitles.empty()) write_subtitles();
+  if (subtitles) subtitles->write(format);
 }
 
 void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
@@ -441,121 +436,6 @@ void VideoWriter::Impl::send_audio_until(std::int64_t until) {
     if (err < 0) fail(ExitCode::kInternal, std::string(codec.audio_encoder) + " refused a frame: " + av_error_text(err));
     audio_sent += n;
     write_packets(audio_encoder, audio_stream);
-  }
-}
-
-namespace {
-
-// The ASS header the text encoders parse (what libavcodec's ff_ass_subtitle_header_default
-// writes); they take each cue as an ASS dialogue line.
-constexpr const char* kAssHeader =
-    "[Script Info]\r\nScriptType: v4.00+\r\nPlayResX: 384\r\nPlayResY: 288\r\nScaledBorderAndShadow: yes\r\n\r\n"
-    "[V4+ Styles]\r\nFormat: Name, Fontname, Fontsize, PrimaryColour, SecondaryColour, OutlineColour, BackColour, Bold, "
-    "Italic, Underline, StrikeOut, ScaleX, ScaleY, Spacing, Angle, BorderStyle, Outline, Shadow, Alignment, MarginL, "
-    "MarginR, MarginV, Encoding\r\nStyle: Default,Arial,16,&Hffffff,&Hffffff,&H0,&H0,0,0,0,0,100,100,0,0,1,1,0,2,10,10,"
-    "10,0\r\n\r\n[Events]\r\nFormat: Layer, Start, End, Style, Name, MarginL, MarginR, MarginV, Effect, Text\r\n";
-
-/// A caption as an ASS dialogue line's text: line breaks become \N; braces (ASS override
-/// blocks) and backslashes (escapes) would be read as markup, so they become ( ) and /.
-std::string ass_text(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '\n') out += "\\N";
-    else if (c == '{') out += '(';
-    else if (c == '}') out += ')';
-    else if (c == '\\') out += '/';
-    else out += c;
-  }
-  return out;
-}
-
-std::int64_t milliseconds(double s) { return static_cast<std::int64_t>(std::llround(s * 1000.0)); }
-
-}  // namespace
-
-void VideoWriter::Impl::add_subtitles() {
-  const AVCodec* av_codec = avcodec_find_encoder_by_name(codec.subtitle_encoder);
-  if (av_codec == nullptr) fail(ExitCode::kInternal, std::string("this FFmpeg build has no ") + codec.subtitle_encoder + " encoder");
-  AVCodecContext* text = avcodec_alloc_context3(av_codec);
-  if (text == nullptr) fail(ExitCode::kInternal, "out of memory");
-  text->time_base = AVRational{1, 1000};
-  text->subtitle_header = reinterpret_cast<std::uint8_t*>(av_strdup(kAssHeader));
-  text->subtitle_header_size = static_cast<int>(std::strlen(kAssHeader));
-  text->flags |= AV_CODEC_FLAG_BITEXACT;
-  int err = avcodec_open2(text, av_codec, nullptr);
-  std::vector<std::uint8_t> buffer(1 << 16);
-  std::string failure;
-  if (err < 0) failure = std::string("cannot open ") + codec.subtitle_encoder + ": " + av_error_text(err);
-  for (std::size_t i = 0; i < settings.subtitles.size() && failure.empty(); ++i) {
-    const TextCue& cue = settings.subtitles[i];
-    std::string line = "0,0,Default,,0,0,0,," + ass_text(cue.text);
-    AVSubtitleRect rect{};
-    rect.type = SUBTITLE_ASS;
-    rect.ass = line.data();
-    AVSubtitleRect* rects[1] = {&rect};
-    AVSubtitle sub{};
-    sub.num_rects = 1;
-    sub.rects = rects;
-    sub.start_display_time = 0;
-    sub.end_display_time = static_cast<std::uint32_t>(milliseconds(cue.to_s) - milliseconds(cue.from_s));
-    sub.pts = milliseconds(cue.from_s) * 1000;  // AV_TIME_BASE
-    const int n = avcodec_encode_subtitle(text, buffer.data(), static_cast<int>(buffer.size()), &sub);
-    if (n < 0) {
-      failure = std::string(codec.subtitle_encoder) + " refused caption " + std::to_string(i) + ": " + av_error_text(n);
-      break;
-    }
-    AVPacket* p = av_packet_alloc();
-    if (p == nullptr || av_new_packet(p, n) < 0) {
-      av_packet_free(&p);
-      failure = "out of memory";
-      break;
-    }
-    std::memcpy(p->data, buffer.data(), static_cast<std::size_t>(n));
-    p->pts = p->dts = milliseconds(cue.from_s);
-    p->duration = milliseconds(cue.to_s) - milliseconds(cue.from_s);
-    p->flags |= AV_PKT_FLAG_KEY;
-    subtitle_packets.push_back(p);
-  }
-  if (failure.empty()) {
-    subtitle_stream = avformat_new_stream(format, nullptr);
-    if (subtitle_stream == nullptr || avcodec_parameters_from_context(subtitle_stream->codecpar, text) < 0) {
-      failure = "cannot add a subtitle stream";
-    } else {
-      subtitle_stream->time_base = AVRational{1, 1000};
-      av_dict_set(&subtitle_stream->metadata, "language", "eng", 0);
-    }
-  }
-  avcodec_free_context(&text);
-  if (!failure.empty()) fail(ExitCode::kInternal, failure);
-}
-
-void VideoWriter::Impl::write_subtitles() {
-  for (AVPacket*& p : subtitle_packets) {
-    av_packet_rescale_ts(p, AVRational{1, 1000}, subtitle_stream->time_base);
-    p->stream_index = subtitle_stream->index;
-    const int err = av_interleaved_write_frame(format, p);
-    av_packet_free(&p);
-    if (err < 0) fail(ExitCode::kIoError, "cannot write a caption: " + av_error_text(err));
-  }
-  subtitle_packets.clear();
-}
-
-void VideoWriter::Impl::add_chapters() {
-  for (std::size_t i = 0; i < settings.chapters.size(); ++i) {
-    const ChapterMark& mark = settings.chapters[i];
-    auto* chapter = static_cast<AVChapter*>(av_mallocz(sizeof(AVChapter)));
-    void* grown = chapter == nullptr ? nullptr : av_realloc_array(format->chapters, format->nb_chapters + 1, sizeof(AVChapter*));
-    if (grown == nullptr) {
-      av_free(chapter);
-      fail(ExitCode::kInternal, "out of memory");
-    }
-    format->chapters = static_cast<AVChapter**>(grown);
-    format->chapters[format->nb_chapters++] = chapter;  // Freed with the format context.
-    chapter->id = static_cast<std::int64_t>(i) + 1;
-    chapter->time_base = AVRational{1, 1000};
-    chapter->start = milliseconds(mark.start_s);
-    chapter->end = milliseconds(mark.end_s);
-    av_dict_set(&chapter->metadata, "title", mark.title.c_str(), 0);
   }
 }
 
