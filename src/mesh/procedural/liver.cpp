@@ -54,8 +54,9 @@ Field liver_field() {
   const Vec fundus(-0.010, -0.052, 0.045);
   p.push_back(ellipsoid(kGallbladder, kCenter + 0.72 * (fundus - kCenter), axes_along(fundus - kCenter, Vec::UnitX()),
                         Vec(0.030, 0.013, 0.013), 0.006));
-  // The inferior vena cava leaving the back of the dome.
-  p.push_back(radial(kInferiorVenaCava, Vec(-0.012, 0.098, -0.060), 0.5, 0.0120, 0.0110, 0.010));
+  // The inferior vena cava leaving the back of the dome: a short stub, below the right
+  // lobe's top, so the dome's top meets the diaphragm first (scenes/chest.yaml).
+  p.push_back(radial(kInferiorVenaCava, Vec(-0.012, 0.045, -0.062), 0.5, 0.0120, 0.0110, 0.010));
   return field;
 }
 

@@ -39,9 +39,23 @@ constexpr double kDomeThickness = 0.008;  ///< unit: m
 /// where the heart rests, is anterior, so the heart sits on the flat of the dome. unit: m
 constexpr double kDomeCrestZ = 0.04;
 
-/// The upper sheet's height at normalized radius rho and x: a paraboloid dome, the right
-/// side (-X, over the liver) higher than the left. unit: m
-double dome_height(double rho, double x) { return kDomeHeight * (1.0 - rho * rho) * (1.0 - 0.15 * x / kDomeRadiusX); }
+/// Normalized radius within which the dome's top is flat: the central tendon, where the
+/// heart rests (a paraboloid's crest would meet the heart's rounded wall at a point and
+/// dent it; a flat tendon spreads the load over square centimetres). unit: 1
+constexpr double kTendonFlat = 0.4;
+
+/// The drop of the upper sheet below the crest, as a fraction of kDomeHeight: rho^2 (a
+/// paraboloid) outside kTendonFlat; inside, a quartic with the same value and slope at
+/// kTendonFlat and none at the centre (within rho 0.3 it stays within 2.5 % of the dome's
+/// height, 1.3 mm, of flat). unit: 1
+double dome_drop(double rho) {
+  constexpr double r2 = kTendonFlat * kTendonFlat;
+  return rho >= kTendonFlat ? rho * rho : 0.5 * (rho * rho * rho * rho / r2 + r2);
+}
+
+/// The upper sheet's height at normalized radius rho and x: a dome with a flat top, the
+/// right side (-X, over the liver) higher than the left. unit: m
+double dome_height(double rho, double x) { return kDomeHeight * (1.0 - dome_drop(rho)) * (1.0 - 0.15 * x / kDomeRadiusX); }
 
 int diaphragm_part(double rho, double x) {
   if (rho >= 0.95) return kCostalMargin;
