@@ -383,8 +383,11 @@ void Heart::add_cavities_and_landmarks(const Wall& left, const Wall& right) {
     anatomy.cavities.push_back({is_left ? "left_atrium" : "right_atrium", wall->lining(annulus, last), {}});
   }
   for (Cavity& cavity : anatomy.cavities) find_rims(cavity);
-  // Hidden by the walls' outside: every lining vertex and the inflow valves' leaflets.
+  // Hidden by the walls' outside: the linings and the inflow valves' leaflets. Not the right
+  // ventricle's: where its flattened wall closes on the left's at the top of the
+  // interventricular groove, a sliver of its lining shows (a few pixels of a 720p frame).
   for (const Cavity& cavity : anatomy.cavities) {
+    if (cavity.name == "right_ventricle") continue;
     for (const Eigen::Vector3i& t : cavity.lining) anatomy.enclosed_vertices.insert(anatomy.enclosed_vertices.end(), {t[0], t[1], t[2]});
   }
   for (const Valve& valve : anatomy.valves) {
