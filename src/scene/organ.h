@@ -127,6 +127,9 @@ struct Body {
   /// Drives the rest volume, V0(t) = V0 (1 + amplitude * phi(t - delay)): lungs inflating.
   /// waveform kNone: a constant rest volume. Needs the volume constraint.
   Drive volume_drive;
+  /// Muscle with fibres (the anatomical heart): the fibres' tension beside the active strain,
+  /// a further fibre shortening 1 - fibre_tension c (sim/forces.h). unit: 1
+  double fibre_tension = 0;
 };
 
 // ---------------------------------------------------------------------------------------

@@ -19,7 +19,14 @@ namespace systole::sim {
 /// fibre shortens to 1 - c, the cross-fibre direction in the wall to 1 - k c (k the spring's
 /// cross-fibre ratio: cross-fibre shortening is measured in vivo, Costa et al. 1999), and the
 /// direction across the wall lengthens to 1 / ((1 - c)(1 - k c)) so the muscle keeps its
-/// volume; a spring takes the length that stretch gives its direction. unit: m
+/// volume; a spring takes the length that stretch gives its direction.
+/// Beside this strain the fibre pulls with a tension of its own (an active stress, as in
+/// Nash & Panfilov 2004, "Electromechanical model of excitable tissue to study reentrant
+/// cardiac arrhythmias", Prog Biophys Mol Biol 85:501): its rest length shortens by a further
+/// 1 - t c (t = fibre_tension) that the other directions do not take up. A strain alone
+/// prescribes each layer's shape, so the lining's and the outside's opposite helices cancel
+/// each other's shear; a tension lets the layer that pulls harder win, which is what twists a
+/// ventricle (docs/anatomy.md). unit: m
 inline double driven_rest_length(const Springs& sp, int j, const Eigen::VectorXd& contraction) {
   const double ca = sp.region_a[j] >= 0 ? contraction[sp.region_a[j]] : 0.0;
   const double cb = sp.region_b[j] >= 0 ? contraction[sp.region_b[j]] : 0.0;
@@ -27,9 +34,10 @@ inline double driven_rest_length(const Springs& sp, int j, const Eigen::VectorXd
   if (sp.fibre_share.empty() || sp.fibre_share[j] < 0) return sp.rest_m[j] * (1.0 - c);
   const double fibre = std::max(0.2, 1.0 - c), cross = std::max(0.2, 1.0 - sp.cross_fibre[j] * c);
   const double fibre2 = fibre * fibre, cross2 = cross * cross, normal2 = 1.0 / (fibre2 * cross2);
+  const double pulled = fibre * std::max(0.2, 1.0 - sp.fibre_tension * c);
   const double sheet = std::max(0.0, 1.0 - sp.fibre_share[j] - sp.normal_share[j]);  // Cross-fibre, in the wall.
-  return sp.rest_m[j] *
-         std::sqrt(1.0 + sp.fibre_share[j] * (fibre2 - 1.0) + sheet * (cross2 - 1.0) + sp.normal_share[j] * (normal2 - 1.0));
+  return sp.rest_m[j] * std::sqrt(1.0 + sp.fibre_share[j] * (pulled * pulled - 1.0) + sheet * (cross2 - 1.0) +
+                                  sp.normal_share[j] * (normal2 - 1.0));
 }
 
 /// Rest volume of the volume constraint at time t: V0(t) = V0 (1 + amplitude phi(t - delay))

@@ -94,7 +94,7 @@ OrganParams organ_params(const scene::Organ& organ) {
   p.where = organ.origin.file.empty() ? "" : where(organ.origin) + ": ";
   const scene::Body& b = organ.body;
   p.body = {b.mass_kg, b.stiffness_N_per_m, b.damping_s, b.volume_stiffness_Pa, b.drag_per_s,
-            b.bending_N_per_m, b.lattice, drive_params(b.volume_drive)};
+            b.bending_N_per_m, b.lattice, drive_params(b.volume_drive), b.fibre_tension};
   p.regions = region_params(organ.regions);
   return p;
 }

@@ -247,6 +247,7 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
       s.cross_fibre.push_back(parts.cross_fibre[kept[idx]]);
     }
   }
+  if (!parts.fibre_share.empty()) s.fibre_tension = organ.body.fibre_tension;
 
   // The volume constraint needs a closed surface.
   if (organ.body.volume_stiffness_Pa > 0 && !parts.volume_triangles.empty()) {

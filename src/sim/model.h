@@ -28,6 +28,9 @@ struct Springs {
   /// the fibre and with the sheet normal, and the cross-fibre ratio k; a fibre share below 0,
   /// or empty vectors: no fibres (sim/forces.h, driven_rest_length).
   std::vector<double> fibre_share, normal_share, cross_fibre;
+  /// The fibres' own tension beside the active strain: a fibre's rest length shortens by a
+  /// further factor 1 - fibre_tension c that the other directions do not take up (sim/forces.h).
+  double fibre_tension = 0;
   std::vector<int> color_begin;          ///< Springs of colour c: [color_begin[c], color_begin[c+1]).
   int stretch_count = 0;                 ///< Springs on surface edges.
   int bending_count = 0;                 ///< Springs across edges (between the two opposite corners).

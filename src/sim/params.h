@@ -85,6 +85,7 @@ struct BodyParams {
   double bending_N_per_m = 0;        ///< Stiffness of the springs across each edge (0: none). unit: N/m
   int lattice = 0;                   ///< Reduced model: voxels along the longest side (0: full model).
   Drive volume_drive;                ///< Drives the rest volume V0(t) = V0 (1 + a phi(t - delay)).
+  double fibre_tension = 0;          ///< Muscle with fibres: the fibres' tension beside the active strain. unit: 1
 };
 
 /// One organ as the simulator sees it.

@@ -10,7 +10,9 @@
 
 #include "common/error.h"
 #include "mesh/procedural/organs.h"
+#include "scene/load.h"
 #include "study/physiology.h"
+#include "support/run.h"
 
 namespace systole::study {
 namespace {
@@ -86,6 +88,35 @@ TEST(Physiology, AtEndSystoleTheAorticValveClosesAndTheMitralOpens) {
   EXPECT_NEAR(mitral_opens, r.end_systole_ms, 1.5 * frame_ms);
   EXPECT_GT(r.end_systole_ms, 100);  // After the contraction has built up,
   EXPECT_LT(r.end_systole_ms, 400);  // within its systole (0.36 of 833 ms).
+}
+
+TEST(Physiology, AFibreTensionTwistsTheVentricle) {
+  // With the active strain alone the lining's and the outside's opposite helices cancel each
+  // other's shear; the fibres' tension lets the outside win (docs/anatomy.md, "Twist").
+  scene::Scene strain_only = anatomical_heart(0.22);
+  strain_only.organs[0].body.damping_s = 0.001;
+  scene::Scene tension = strain_only;
+  tension.organs[0].body.fibre_tension = 0.55;
+  const PhysiologyReport without = measure_physiology(strain_only, 1), with = measure_physiology(tension, 1);
+  EXPECT_GT(with.twist_deg, without.twist_deg + 2) << without.twist_deg << " -> " << with.twist_deg << " deg";
+  EXPECT_GT(with.apical_rotation_deg, without.apical_rotation_deg);
+  EXPECT_LT(with.muscle_volume_change_pct, 12);
+}
+
+// The shipped anatomical heart is a normal heart: every figure a cardiologist measures is
+// within its normal range (src/study/physiology.h cites each range's source).
+TEST(Physiology, TheShippedHeartIsNormal) {
+  for (const char* name : {"heart-cutaway"}) {
+    const PhysiologyReport r = measure_physiology(scene::load(test::source(std::string("scenes/") + name + ".yaml")));
+    EXPECT_TRUE(kEndDiastolicVolume.holds(r.end_diastolic_ml)) << name << ": " << r.end_diastolic_ml << " ml";
+    EXPECT_TRUE(kEndSystolicVolume.holds(r.end_systolic_ml)) << name << ": " << r.end_systolic_ml << " ml";
+    EXPECT_TRUE(kEjectionFraction.holds(r.ejection_fraction_pct)) << name << ": " << r.ejection_fraction_pct << " %";
+    EXPECT_TRUE(kLongAxisShortening.holds(r.long_axis_shortening_pct)) << name << ": " << r.long_axis_shortening_pct << " %";
+    EXPECT_TRUE(kWallThickening.holds(r.wall_thickening_pct)) << name << ": " << r.wall_thickening_pct << " %";
+    EXPECT_TRUE(kTwist.holds(r.twist_deg)) << name << ": " << r.twist_deg << " deg";
+    EXPECT_TRUE(kEjectionShare.holds(r.ejection_pct)) << name << ": " << r.ejection_pct << " %";
+    EXPECT_TRUE(r.outside_normal().empty()) << name << ":\n" << physiology_text(r);
+  }
 }
 
 const SegmentThickening& segment(const PhysiologyReport& r, int aha) {

@@ -507,6 +507,11 @@ ValueSpec<Body> body_spec() {
             "Drives the rest volume instead of rest lengths: V0(t) = V0 (1 + amplitude phi(t - delay)), "
             "`amplitude` the fraction of volume added (lungs inflating). Needs `volume_stiffness` > 0 "
             "and a closed surface."),
+      field("fibre_tension", number(closed(0, 1)), &Body::fibre_tension,
+            "Muscle with fibres (the anatomical heart): the fibres' tension beside their active strain. "
+            "A driven fibre's rest length shortens by a further 1 - fibre_tension x contraction that the "
+            "other directions do not take up, so the layer that pulls harder wins: the ventricle twists "
+            "(docs/anatomy.md). 0 = the strain alone. Has no effect on a body without fibres."),
   });
 }
 
