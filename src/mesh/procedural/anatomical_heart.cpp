@@ -55,7 +55,7 @@ constexpr double kApexAlong = 2.0 / 12;
 constexpr double kRightOffset = 42 * mm;     // Between the two walls' axes.
 constexpr double kRightLower = 6 * mm;       // The tricuspid annulus lies lower than the mitral.
 constexpr double kSeptumOverlap = 1.5 * mm;  // The right wall reaches into the left's.
-constexpr double kRightLean = 16 * mm;       // The right ventricle's apex towards the left's axis.
+constexpr double kRightLean = 10 * mm;       // The right ventricle's apex towards the left's axis.
 constexpr double kRightWiden = 1.3;          // Its radii below the annulus, against the meridian's.
 
 std::vector<double> in_metres(const std::vector<double>& millimetres) {
