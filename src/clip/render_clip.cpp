@@ -141,6 +141,7 @@ ClipSurfaces add_surfaces(render::Renderer& renderer, const scene::Scene& scene,
     // An open surface (an atlas part, a sheet) would show nothing through its holes or
     // from behind with its back faces culled.
     renderer.set_two_sided(s.ids.back(), body.geometry.report.closed() ? -1 : detail.two_sided_from);
+    if (!detail.enclosed.empty()) renderer.set_enclosed(s.ids.back(), detail.enclosed);
     s.drawn.push_back(std::move(detail.triangles));
     if (const render::OrganColorMap map = render::organ_color_map(organ); map.has) {
       s.dynamic[o].emplace();

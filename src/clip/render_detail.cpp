@@ -64,6 +64,11 @@ RenderDetail render_detail(const scene::Scene& scene, const world::World& world,
                                                  return static_cast<std::size_t>(t[0]) < closed.size() && closed[t[0]];
                                                });
   detail.two_sided_from = static_cast<int>(open_from - detail.triangles.begin());
+  if (const std::vector<int>& inside = world.organs[organ].geometry.mesh.anatomy.enclosed_vertices; !inside.empty()) {
+    std::vector<char> is_inside(surface.positions.size(), 0);
+    for (int v : inside) is_inside[static_cast<std::size_t>(v)] = 1;
+    for (const Eigen::Vector3i& t : detail.triangles) detail.enclosed.push_back(is_inside[t[0]] && is_inside[t[1]] && is_inside[t[2]]);
+  }
   return detail;
 }
 

@@ -81,6 +81,11 @@ struct Anatomy {
   /// The chamber walls' surfaces (outside and lining), facing out of the muscle: they
   /// enclose the myocardium, whose volume shows how nearly incompressible it stays.
   std::vector<Eigen::Vector3i> muscle;
+  /// Surface vertices inside the chamber walls' closed outside, which hides them from any
+  /// eye outside the heart unless it is cut or see-through: the cavities' linings and the
+  /// valves between atria and ventricles (the outflow valves, in the vessels, show through
+  /// their open ends). A renderer may leave their triangles out of such views.
+  std::vector<int> enclosed_vertices;
 
   bool empty() const { return myocardium.empty(); }
 };

@@ -23,6 +23,8 @@ struct PreparedView {
   Eigen::Vector3f eye, up;
   GLint x = 0, y = 0;  ///< GL viewport: bottom-left origin. unit: px
   GLsizei width = 0, height = 0;
+  Eigen::Vector3d eye_m, forward;  ///< The camera's position and unit view direction.
+  double near_m = 0;               ///< The near plane's distance along `forward`. unit: m
   const ViewDraw* source = nullptr;
 };
 
@@ -41,10 +43,27 @@ struct Surface {
   float max_opacity = 1;  ///< From kOpaqueFrom: a part goes through the opaque pass.
   scene::ClipPlane clip;  ///< The surface's own cut (set_clip).
   int two_sided_from = -1; ///< Back faces drawn from this triangle on (set_two_sided); -1: none.
+  /// The triangles an outside view draws (set_enclosed): the others, in order, in their own
+  /// index buffer and vertex array (the same attribute buffers). 0: none marked.
+  GLuint outside_vao = 0;
+  GLuint outside_indices = 0;
+  GLsizei outside_index_count = 0;
+  std::vector<int> outside_triangles;  ///< Their indices in the full list, ascending.
   bool uploaded = false;         ///< update_surface has given it positions.
   Eigen::Vector3d box_min = Eigen::Vector3d::Zero();  ///< Bounds of the last upload. unit: m
   Eigen::Vector3d box_max = Eigen::Vector3d::Zero();
 };
+
+/// True when every corner of the surface's last bounds lies beyond the view's near plane:
+/// nothing of it is cut by that plane, and the eye (depth 0) is outside it.
+bool clear_of_near_plane(const Surface& s, const PreparedView& p) {
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d c((corner & 1) ? s.box_max.x() : s.box_min.x(), (corner & 2) ? s.box_max.y() : s.box_min.y(),
+                            (corner & 4) ? s.box_max.z() : s.box_min.z());
+    if (!(p.forward.dot(c - p.eye_m) > p.near_m)) return false;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -92,9 +111,10 @@ struct Renderer::Impl {
 
   void release_gl_objects() noexcept {
     for (Surface& s : surfaces) {
-      const GLuint buffers[] = {s.positions, s.normals, s.colors, s.opacity, s.indices};
-      glDeleteBuffers(5, buffers);
+      const GLuint buffers[] = {s.positions, s.normals, s.colors, s.opacity, s.indices, s.outside_indices};
+      glDeleteBuffers(6, buffers);
       glDeleteVertexArrays(1, &s.vao);
+      if (s.outside_vao) glDeleteVertexArrays(1, &s.outside_vao);
     }
     surfaces.clear();
     for (auto& variants : programs) {
@@ -290,6 +310,52 @@ void Renderer::set_two_sided(int id, int from_triangle) {
   r.surfaces[static_cast<std::size_t>(id)].two_sided_from = from_triangle;
 }
 
+void Renderer::set_enclosed(int id, const std::vector<char>& enclosed) {
+  Impl& r = *impl_;
+  if (id < 0 || static_cast<std::size_t>(id) >= r.surfaces.size()) {
+    fail("set_enclosed: unknown surface id " + std::to_string(id));
+  }
+  Surface& s = r.surfaces[static_cast<std::size_t>(id)];
+  if (enclosed.size() * 3 != static_cast<std::size_t>(s.index_count)) {
+    fail("set_enclosed: " + std::to_string(enclosed.size()) + " flags for " + std::to_string(s.index_count / 3) +
+         " triangles");
+  }
+  r.make_current();
+  std::vector<std::uint32_t> all(static_cast<std::size_t>(s.index_count));
+  glBindVertexArray(s.vao);  // Its element buffer is the surface's indices.
+  glGetBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(all.size() * sizeof(std::uint32_t)), all.data());
+  glBindVertexArray(0);
+  std::vector<std::uint32_t> outside;
+  s.outside_triangles.clear();
+  for (std::size_t t = 0; t < enclosed.size(); ++t) {
+    if (enclosed[t]) continue;
+    s.outside_triangles.push_back(static_cast<int>(t));
+    outside.insert(outside.end(), all.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                   all.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+  }
+  if (!s.outside_vao) {
+    glGenVertexArrays(1, &s.outside_vao);
+    glBindVertexArray(s.outside_vao);
+    const std::pair<GLuint, GLuint> attributes[] = {{s.positions, kPositionAttrib}, {s.normals, kNormalAttrib},
+                                                    {s.colors, kColorAttrib}, {s.opacity, kOpacityAttrib}};
+    for (const auto& [buffer, location] : attributes) {
+      const GLint size = location == kOpacityAttrib ? 1 : 3;
+      glBindBuffer(GL_ARRAY_BUFFER, buffer);
+      glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, size * static_cast<GLsizei>(sizeof(float)), nullptr);
+      glEnableVertexAttribArray(location);
+    }
+    glGenBuffers(1, &s.outside_indices);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, s.outside_indices);  // Recorded in the VAO.
+  } else {
+    glBindVertexArray(s.outside_vao);
+  }
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(outside.size() * sizeof(std::uint32_t)), outside.data(),
+               GL_STATIC_DRAW);
+  glBindVertexArray(0);
+  s.outside_index_count = static_cast<GLsizei>(outside.size());
+  check_gl("set_enclosed");
+}
+
 void Renderer::set_clip(int id, const scene::ClipPlane& clip) {
   Impl& r = *impl_;
   if (id < 0 || static_cast<std::size_t>(id) >= r.surfaces.size()) {
@@ -350,6 +416,9 @@ void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene:
     p.view_projection =
         (perspective(v.camera.fov_rad, static_cast<double>(rect.width) / rect.height, depth) * view).cast<float>();
     p.eye = v.camera.position_m.cast<float>();
+    p.eye_m = v.camera.position_m;
+    p.forward = (v.camera.target_m - v.camera.position_m).normalized();
+    p.near_m = depth.near_m;
     p.up = view.block<1, 3>(1, 0).transpose().cast<float>();
     p.x = rect.x;
     p.y = r.height - rect.y - rect.height;
@@ -402,24 +471,34 @@ void Renderer::draw(const std::vector<ViewDraw>& views, const std::vector<scene:
         glUniform3fv(program.loc.cut_color, 1, cut.data());
         glEnable(GL_CLIP_DISTANCE0);
       }
+      // The enclosed triangles (set_enclosed) are hidden by the outside when nothing cuts
+      // it, every part is opaque and no part of it lies before the near plane (nor the eye
+      // inside): then the rest is drawn, in the same order.
+      const bool outside_only = s.outside_vao && !clip.enabled && !has_transparent && clear_of_near_plane(s, p);
+      const GLsizei index_count = outside_only ? s.outside_index_count : s.index_count;
       // Through a cut the inside shows as the cut face; an open surface shows its back:
       // the triangles from two_sided_from on are drawn without culling.
-      GLsizei culled = s.index_count;  // The indices drawn with back faces culled.
+      GLsizei culled = index_count;  // The indices drawn with back faces culled.
       if (clip.enabled) {
         culled = 0;
       } else if (s.two_sided_from >= 0) {
-        culled = std::min<GLsizei>(3 * s.two_sided_from, s.index_count);
+        const GLsizei before =
+            outside_only ? static_cast<GLsizei>(std::lower_bound(s.outside_triangles.begin(), s.outside_triangles.end(),
+                                                                 s.two_sided_from) -
+                                                s.outside_triangles.begin())
+                         : s.two_sided_from;
+        culled = std::min<GLsizei>(3 * before, index_count);
       }
       const auto draw_triangles = [&] {
         if (culled > 0) glDrawElements(GL_TRIANGLES, culled, GL_UNSIGNED_INT, nullptr);
-        if (culled < s.index_count) {
+        if (culled < index_count) {
           glDisable(GL_CULL_FACE);
-          glDrawElements(GL_TRIANGLES, s.index_count - culled, GL_UNSIGNED_INT,
+          glDrawElements(GL_TRIANGLES, index_count - culled, GL_UNSIGNED_INT,
                          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(culled) * sizeof(std::uint32_t)));
           glEnable(GL_CULL_FACE);
         }
       };
-      glBindVertexArray(s.vao);
+      glBindVertexArray(outside_only ? s.outside_vao : s.vao);
       draw_triangles();
       if (clip.enabled) glDisable(GL_CLIP_DISTANCE0);
     };

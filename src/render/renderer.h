@@ -73,6 +73,16 @@ class Renderer {
   /// instead of nothing. Closed pieces, listed first, keep back-face culling.
   void set_two_sided(int id, int from_triangle);
 
+  /// Marks the triangles (indices into add_surface's list, one flag each) that the
+  /// surface's own closed, opaque outside hides from any eye outside it: a heart's cavity
+  /// linings and the valves between its chambers. A view draws them only where they can
+  /// show: when it cuts the surface (its own clip or the view's), when any part of the
+  /// surface is see-through, or when its eye or near plane reaches into the surface's
+  /// bounds. Otherwise it draws the rest, in the same order, so the pixels are the same
+  /// (tests/render: the linings cost a rasterizer as much as the outside, drawn behind it).
+  /// Throws Error(kInternal) for an unknown id or a flag count that is not the triangle count.
+  void set_enclosed(int id, const std::vector<char>& enclosed);
+
   /// Uploads a surface's current vertex positions (unit: m, world space) and unit normals,
   /// 3 floats per vertex, vertex count as given to add_surface. No GL allocation.
   /// Throws Error(kInternal) for an unknown id or a non-finite position.

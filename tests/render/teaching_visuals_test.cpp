@@ -240,5 +240,118 @@ TEST(ColorMap, OrganMapsAndLegends) {
   EXPECT_TRUE(region_legend(organ).empty());
 }
 
+// A hollow ball as a heart is built: a lining (facing into the cavity, blue) listed first,
+// the red outside, then open pieces drawn two-sided: a leaflet inside the cavity and one
+// outside facing away from the eye (seen only from behind).
+struct HollowBall {
+  Shape shape;
+  std::vector<scene::Color> colors;
+  std::vector<char> enclosed;  ///< The lining and the inner leaflet.
+  int two_sided_from = 0;
+};
+
+HollowBall hollow_ball() {
+  HollowBall b;
+  const auto append = [&b](Shape piece, const scene::Color& color, bool enclosed, bool reverse) {
+    const int first = b.shape.vertex_count();
+    for (Eigen::Vector3i t : piece.triangles) {
+      if (reverse) std::swap(t[1], t[2]);
+      b.shape.triangles.push_back(t + Eigen::Vector3i::Constant(first));
+      b.enclosed.push_back(enclosed);
+    }
+    if (reverse) {
+      for (float& n : piece.normals) n = -n;
+    }
+    b.shape.positions.insert(b.shape.positions.end(), piece.positions.begin(), piece.positions.end());
+    b.shape.normals.insert(b.shape.normals.end(), piece.normals.begin(), piece.normals.end());
+    b.colors.insert(b.colors.end(), static_cast<std::size_t>(piece.vertex_count()), color);
+  };
+  append(uv_sphere(Eigen::Vector3f::Zero(), 0.45f, 24, 32), kBlue, true, true);
+  append(uv_sphere(Eigen::Vector3f::Zero(), 0.6f, 24, 32), kRed, false, false);
+  b.two_sided_from = static_cast<int>(b.shape.triangles.size());
+  append(testing::triangle(0.2f, 0.1f), kWhite, true, false);
+  Shape away = testing::triangle(0.15f, 0.7f);  // In front of the ball, its back to the eye.
+  away.translate(Eigen::Vector3f(0.3f, 0.2f, 0));
+  append(away, scene::Color(0.2, 0.9, 0.3), false, true);
+  return b;
+}
+
+/// The hollow ball drawn in `views`, with its enclosed triangles marked or not.
+Image draw_hollow_ball(const std::vector<ViewDraw>& views, bool mark, double opacity = 1,
+                       const scene::ClipPlane& own_clip = {}, const std::vector<char>* marks = nullptr) {
+  const HollowBall b = hollow_ball();
+  Renderer renderer(kWidth, kHeight, 0);
+  scene::Material material;
+  material.opacity = opacity;
+  const int id = renderer.add_surface(b.shape.triangles, b.colors, material);
+  renderer.set_two_sided(id, b.two_sided_from);
+  renderer.set_clip(id, own_clip);
+  if (mark) renderer.set_enclosed(id, marks ? *marks : b.enclosed);
+  renderer.update_surface(id, b.shape.positions.data(), b.shape.normals.data());
+  return render(renderer, views);
+}
+
+ViewDraw whole_view(const Eigen::Vector3d& eye = Eigen::Vector3d(0, 0, 3)) {
+  ViewDraw v;
+  v.camera = front_camera();
+  v.camera.position_m = eye;
+  return v;
+}
+
+TEST(Enclosed, AnOutsideViewLeavesThemOutWithTheSamePixels) {
+  const Image all = draw_hollow_ball({whole_view()}, false);
+  EXPECT_EQ(draw_hollow_ball({whole_view()}, true).rgb, all.rgb);
+  // The leaflet outside (green), seen from behind, is still drawn two-sided among the rest.
+  int green = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const auto p = rgb(all, x, y);
+      green += p[1] > p[0] + 40 && p[1] > p[2] + 40;
+    }
+  }
+  EXPECT_GT(green, 20);
+  const HollowBall b = hollow_ball();
+  // What is left out is left out: mark the outside instead, and the lining shows.
+  std::vector<char> outside(b.enclosed.size());
+  for (std::size_t t = 0; t < outside.size(); ++t) outside[t] = !b.enclosed[t];
+  const Image lining_only = draw_hollow_ball({whole_view()}, true, 1, {}, &outside);
+  const auto near_centre = rgb(lining_only, kWidth / 2 - 12, kHeight / 2 + 8);  // Off the highlight.
+  EXPECT_GT(near_centre[2], near_centre[0] + 40) << "blue: the lining, drawn without the outside";
+}
+
+TEST(Enclosed, ViewsThatCutSeeThroughOrComeInsideDrawThemAsBefore) {
+  ViewDraw cut = whole_view();
+  cut.clip = clip(-Eigen::Vector3d::UnitZ());
+  const Image cut_all = draw_hollow_ball({cut}, false);
+  EXPECT_EQ(draw_hollow_ball({cut}, true).rgb, cut_all.rgb) << "the view's cut";
+  const auto lining = rgb(cut_all, kWidth / 2, kHeight / 2);
+  EXPECT_GT(lining[2], lining[0] + 40) << "through the cut, the lining";
+
+  EXPECT_EQ(draw_hollow_ball({whole_view()}, true, 1, clip(-Eigen::Vector3d::UnitZ())).rgb,
+            draw_hollow_ball({whole_view()}, false, 1, clip(-Eigen::Vector3d::UnitZ())).rgb)
+      << "the surface's own cut";
+  EXPECT_EQ(draw_hollow_ball({whole_view()}, true, 0.5).rgb, draw_hollow_ball({whole_view()}, false, 0.5).rgb)
+      << "see-through";
+  const ViewDraw inside = whole_view(Eigen::Vector3d(0, 0, 0.3));
+  const Image from_inside = draw_hollow_ball({inside}, false);
+  EXPECT_EQ(draw_hollow_ball({inside}, true).rgb, from_inside.rgb) << "the eye inside";
+  const auto seen = rgb(from_inside, kWidth / 2, kHeight / 2);
+  EXPECT_GT(seen[0] + seen[1] + seen[2], 100) << "from inside, the lining and leaflet";
+
+  // Split screen: the plain view leaves them out, the cut one draws them; the same pixels.
+  ViewDraw left = whole_view(), right = cut;
+  left.rect = {0, 0, kWidth / 2, kHeight};
+  right.rect = {kWidth / 2, 0, kWidth / 2, kHeight};
+  EXPECT_EQ(draw_hollow_ball({left, right}, true).rgb, draw_hollow_ball({left, right}, false).rgb);
+}
+
+TEST(Enclosed, RejectsAFlagCountThatIsNotTheTriangleCount) {
+  const HollowBall b = hollow_ball();
+  Renderer renderer(kWidth, kHeight, 0);
+  const int id = renderer.add_surface(b.shape.triangles, b.colors, scene::Material{});
+  EXPECT_THROW(renderer.set_enclosed(id, std::vector<char>(3, 0)), Error);
+  EXPECT_THROW(renderer.set_enclosed(id + 1, b.enclosed), Error);
+}
+
 }  // namespace
 }  // namespace systole::render

@@ -21,6 +21,7 @@
 // circumferential in the atria.
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -54,6 +55,8 @@ constexpr double kApexAlong = 2.0 / 12;
 constexpr double kRightOffset = 42 * mm;     // Between the two walls' axes.
 constexpr double kRightLower = 6 * mm;       // The tricuspid annulus lies lower than the mitral.
 constexpr double kSeptumOverlap = 1.5 * mm;  // The right wall reaches into the left's.
+constexpr double kRightLean = 10 * mm;       // The right ventricle's apex towards the left's axis.
+constexpr double kRightWiden = 1.3;          // Its radii below the annulus, against the meridian's.
 
 std::vector<double> in_metres(const std::vector<double>& millimetres) {
   std::vector<double> m;
@@ -164,15 +167,30 @@ Wall Heart::make_right(const Wall& left) {
   w.helix_rad = helix;
   w.cross_fibre = cross_fibre;
   const Vec e1 = w.e1, e2 = w.e2;
+  // The ventricle leans towards the left's apex: its rings below the annulus move towards
+  // the left wall's axis, most at its own apex, so its lower end runs into the left's apex
+  // instead of rounding off beside it as a second ball. unit: m
+  const auto lean = [](double along) {
+    return along >= kAnnulusAlong ? 0.0 : kRightLean * std::pow(1 - along / kAnnulusAlong, 2);
+  };
+  const Vec towards_left = layout_.to_right_heart;
+  w.shift = [=](double along) -> Vec { return -lean(along) * towards_left; };
+  const std::vector<double> heights = in_metres(kRightHeight);
+  auto height_at = [heights](double along) {  // Linear is close enough to decide the contact.
+    const double u = along * (heights.size() - 1);
+    const int i = std::min(static_cast<int>(u), static_cast<int>(heights.size()) - 2);
+    return heights[i] + (u - i) * (heights[i + 1] - heights[i]);
+  };
   // Where a ray from the right wall's axis meets the left wall's outside, in the plane at
   // this height: the right wall stops there (overlapping a little), so the septum is one
   // wall and the right ventricle a crescent round the left. 0: no contact.
-  const auto contact = [&left, e1, e2](double around, double height) {
-    const double left_radius = left.outside_radius_at(height + kRightLower, 0);
+  const auto contact = [&left, e1, e2, lean, height_at](double around, double along) {
+    const double left_radius = left.outside_radius_at(height_at(along) + kRightLower, 0);
     if (left_radius <= 0) return 0.0;
+    const double offset = kRightOffset - lean(along);  // Between the two axes here.
     const Vec ray = std::cos(around) * e1 + std::sin(around) * e2;
-    const double c_dot_u = kRightOffset * ray.dot(-e1);  // Right axis minus left axis, along the ray.
-    const double disc = c_dot_u * c_dot_u - kRightOffset * kRightOffset + left_radius * left_radius;
+    const double c_dot_u = offset * ray.dot(-e1);  // Right axis minus left axis, along the ray.
+    const double disc = c_dot_u * c_dot_u - offset * offset + left_radius * left_radius;
     if (disc < 0) return 0.0;
     const double r = -c_dot_u - std::sqrt(disc);
     return r > 0 ? r : 0.0;
@@ -181,16 +199,37 @@ Wall Heart::make_right(const Wall& left) {
   auto appendage = [appendage_around](double around, double along) {
     return std::exp(-std::pow(angle_between(around, appendage_around) / 0.4, 2) - std::pow((along - 0.70) / 0.07, 2));
   };
-  const std::vector<double> heights = in_metres(kRightHeight);
-  auto height_at = [heights](double along) {  // Linear is close enough to decide the contact.
-    const double u = along * (heights.size() - 1);
-    const int i = std::min(static_cast<int>(u), static_cast<int>(heights.size()) - 2);
-    return heights[i] + (u - i) * (heights[i + 1] - heights[i]);
-  };
+  // The ventricle's free wall lies behind two planes, its flat faces: the sternocostal face
+  // in front, turned towards the apex and the left so it recedes into the interventricular
+  // groove and the apex (one cone with the left ventricle from the front, not a second
+  // ball), and the diaphragmatic face below, rising to the right; they meet at the acute
+  // margin. The wall is wider than its meridian says to keep its cavity's volume.
+  const Vec front = (layout_.anterior + 0.3 * layout_.axis + 1.0 * layout_.left).normalized();
+  const double front_from_origin = front.dot(origin) + 24 * mm;
+  const Vec below = Vec(-0.5, -1, 0).normalized();
+  const double below_from_origin = below.dot(origin) + 44 * mm;
+  const Vec axis = layout_.axis;
   w.shape_radius = [=](double around, double along, double radius, double thickness) {
+    // The ventricle only (the atrium keeps its size), blended over the annulus.
+    radius *= 1 + (kRightWiden - 1) * std::clamp((kAnnulusAlong + 0.04 - along) / 0.08, 0.0, 1.0);
     double r = radius + 9 * mm * appendage(around, along);
-    if (const double meet = contact(around, height_at(along)); meet > 0) {
-      r = std::max(0.3 * radius, std::min(r, meet + kSeptumOverlap - thickness));
+    if (along <= kAnnulusAlong + 0.05) {
+      const Vec ray = std::cos(around) * e1 + std::sin(around) * e2;
+      const Vec centre = origin + height_at(along) * axis - lean(along) * towards_left;
+      constexpr double soft = 3 * mm;  // A smooth minimum: the faces meet the round wall without a crease.
+      double limit = r;
+      for (const auto& [n, d] : {std::pair{front, front_from_origin}, std::pair{below, below_from_origin}}) {
+        const double towards = n.dot(ray);
+        if (towards <= 1e-3) continue;
+        const double most = (d - n.dot(centre)) / towards - thickness;  // The outside on the plane.
+        limit = -soft * std::log(std::exp(-limit / soft) + std::exp(-most / soft));
+      }
+      r = std::max(limit, 0.25 * radius);
+    }
+    // Near its apex the leaning wall nearly touches the left's: it may thin to a slit there,
+    // but never reach through the septum into the left cavity.
+    if (const double meet = contact(around, along); meet > 0) {
+      r = std::max(0.05 * radius, std::min(r, meet + kSeptumOverlap - thickness));
     }
     return r;
   };
@@ -199,7 +238,7 @@ Wall Heart::make_right(const Wall& left) {
   const int ivs = part("interventricular_septum"), ias = part("interatrial_septum");
   const int raa = part("right_atrial_appendage");
   const auto septal = [=](double around, double along, double radius_limit) {
-    return contact(around, height_at(along)) > 0 && contact(around, height_at(along)) < radius_limit;
+    return contact(around, along) > 0 && contact(around, along) < radius_limit;
   };
   Wall right(builder_, w, [=](const WallPoint& p, bool drawn) {
     const bool ventricle = p.along <= kAnnulusAlong + 1e-9;
@@ -344,6 +383,19 @@ void Heart::add_cavities_and_landmarks(const Wall& left, const Wall& right) {
     anatomy.cavities.push_back({is_left ? "left_atrium" : "right_atrium", wall->lining(annulus, last), {}});
   }
   for (Cavity& cavity : anatomy.cavities) find_rims(cavity);
+  // Hidden by the walls' outside: the linings and the inflow valves' leaflets. Not the right
+  // ventricle's: where its flattened wall closes on the left's at the top of the
+  // interventricular groove, a sliver of its lining shows (a few pixels of a 720p frame).
+  for (const Cavity& cavity : anatomy.cavities) {
+    if (cavity.name == "right_ventricle") continue;
+    for (const Eigen::Vector3i& t : cavity.lining) anatomy.enclosed_vertices.insert(anatomy.enclosed_vertices.end(), {t[0], t[1], t[2]});
+  }
+  for (const Valve& valve : anatomy.valves) {
+    if (valve.opens_on_filling) anatomy.enclosed_vertices.insert(anatomy.enclosed_vertices.end(), valve.vertices.begin(), valve.vertices.end());
+  }
+  std::sort(anatomy.enclosed_vertices.begin(), anatomy.enclosed_vertices.end());
+  anatomy.enclosed_vertices.erase(std::unique(anatomy.enclosed_vertices.begin(), anatomy.enclosed_vertices.end()),
+                                  anatomy.enclosed_vertices.end());
   for (const Wall* wall : {&left, &right}) anatomy.muscle.insert(anatomy.muscle.end(), wall->triangles().begin(), wall->triangles().end());
   VentricleLandmarks& lv = anatomy.left_ventricle;
   const int per_key = left.shape().draw_rows_per_key, columns = left.draw_columns();
@@ -402,7 +454,7 @@ OrganMesh Heart::build() {
 
   // Coronary arteries: the anterior descending in the anterior interventricular groove, the
   // circumflex in the left atrioventricular groove, the right coronary in the right one.
-  const double groove = around_towards(ls, (l.anterior + 1.1 * l.to_right_heart).normalized());
+  const double groove = around_towards(ls, (l.anterior + 0.45 * l.to_right_heart).normalized());
   const double sense = std::sin(groove) >= 0 ? 1.0 : -1.0;  // The way round from the groove to the lateral wall.
   add_coronary(left, {{groove, kAnnulusAlong - 0.03}, {groove + 0.1 * sense, 0.3}, {groove + 0.25 * sense, 0.1}}, 1.6 * mm);
   add_coronary(left, {{groove, kAnnulusAlong - 0.02}, {groove + 1.4 * sense, kAnnulusAlong - 0.015},

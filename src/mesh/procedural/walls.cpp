@@ -183,22 +183,37 @@ double Wall::lining_radius(double around, double along) const {
   return shape_.shape_radius(around, along, radius, thickness);
 }
 
+Vec Wall::outward(double around, double along, const Eigen::Vector2d& normal) const {
+  const Vec radial = std::cos(around) * shape_.e1 + std::sin(around) * shape_.e2;
+  const Vec straight = normal[0] * radial + normal[1] * shape_.axis;
+  if (!shape_.shift) return straight;
+  // The meridian's tangent (d/d along) with the shift's slope, crossed with the circumferential.
+  const double h = 1e-4, a = std::max(0.0, along - h), b = std::min(1.0, along + h);
+  const Vec tangent = (key_value(shape_.height, b, false) - key_value(shape_.height, a, false)) / (b - a) * shape_.axis +
+                      (key_value(shape_.radius, b, true) - key_value(shape_.radius, a, true)) / (b - a) * radial +
+                      (shape_.shift(b) - shape_.shift(a)) / (b - a);
+  const Vec circumferential = -std::sin(around) * shape_.e1 + std::cos(around) * shape_.e2;
+  Vec n = tangent.cross(circumferential);
+  if (n.norm() < 1e-12) return straight;  // A pole: the axis' own direction.
+  n.normalize();
+  return n.dot(straight) < 0 ? Vec(-n) : n;
+}
+
 Vec Wall::point(const WallPoint& p) const {
   double height, radius, thickness;
   Eigen::Vector2d normal;
   meridian(p.along, height, radius, thickness, normal);
   const Vec radial = std::cos(p.around) * shape_.e1 + std::sin(p.around) * shape_.e2;
   const double lining = lining_radius(p.around, p.along);
-  return shape_.origin + height * shape_.axis + lining * radial +
-         p.across * thickness * (normal[0] * radial + normal[1] * shape_.axis);
+  const Vec bend = shape_.shift ? shape_.shift(p.along) : Vec::Zero();
+  return shape_.origin + height * shape_.axis + lining * radial + bend + p.across * thickness * outward(p.around, p.along, normal);
 }
 
 void Wall::frame(const WallPoint& p, Vec& circumferential, Vec& meridian_dir, Vec& normal) const {
   double height, radius, thickness;
   Eigen::Vector2d n2;
   meridian(p.along, height, radius, thickness, n2);
-  const Vec radial = std::cos(p.around) * shape_.e1 + std::sin(p.around) * shape_.e2;
-  normal = (n2[0] * radial + n2[1] * shape_.axis).normalized();
+  normal = outward(p.around, p.along, n2).normalized();
   circumferential = -std::sin(p.around) * shape_.e1 + std::cos(p.around) * shape_.e2;
   circumferential = (circumferential - circumferential.dot(normal) * normal).normalized();
   meridian_dir = normal.cross(circumferential);

@@ -37,6 +37,9 @@ struct WallShape {
   /// Adjusts the lining's radius at (around, along): the nominal radius and thickness in,
   /// the radius out (bulges, and where the wall meets a neighbour's).
   std::function<double(double around, double along, double radius, double thickness)> shape_radius;
+  /// Moves the ring at `along` off the axis (a bent axis: a chamber leaning towards its
+  /// neighbour's apex); empty: straight. The wall's frame follows the bend. unit: m
+  std::function<Vec(double along)> shift;
   /// Muscle fibre helix angle from the circumferential direction at a place across and along
   /// the wall (Streeter); empty: passive tissue (no fibres, contracts evenly if driven).
   std::function<double(double across, double along)> helix_rad;
@@ -95,6 +98,9 @@ class Wall {
   double key_value(const std::vector<double>& keys, double along, bool odd) const;
   double key_slope(const std::vector<double>& keys, double along, bool odd) const;
   void meridian(double along, double& height, double& radius, double& thickness, Eigen::Vector2d& normal) const;
+  /// The outward normal at (around, along) from the meridian's 2-D normal, turned by the
+  /// shift's slope where the axis bends.
+  Vec outward(double around, double along, const Eigen::Vector2d& normal) const;
   int node(int layer, int row, int column) const;  ///< row 0 and rows_ are the poles (closed walls).
 
   HeartBuilder& builder_;
