@@ -14,6 +14,7 @@ struct MotionArgs {
   std::vector<std::string> defines;
   double duration_s = 0;
   double band_mm = 1;
+  int settle_beats = 1;
 };
 
 }  // namespace
@@ -29,9 +30,12 @@ Command add_motion_command(CLI::App& app) {
   cmd->add_option("--band", o->band_mm, "How near another part a vertex is watched, in mm")
       ->check(CLI::Range(0.1, 50.0))
       ->capture_default_str();
+  cmd->add_option("--settle", o->settle_beats, "Beats left out as the body leaves its rest shape")
+      ->check(CLI::Range(1, 20))
+      ->capture_default_str();
   return {cmd, [o] {
             const auto scene = scene::load(o->scene, o->defines);
-            const study::MotionReport report = study::check_motion(scene, {o->duration_s, o->band_mm * 1e-3});
+            const study::MotionReport report = study::check_motion(scene, {o->duration_s, o->band_mm * 1e-3, o->settle_beats});
             std::cout << study::motion_text(report);
             return report.periodic() && report.parts_kept() ? 0 : static_cast<int>(ExitCode::kDiffers);
           }};

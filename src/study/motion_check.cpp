@@ -23,12 +23,13 @@ double at_time(const std::vector<double>& signal, double t0_s, double frame_s, d
   return (1 - w) * signal[i] + w * signal[i + 1];
 }
 
-RegionBeats compare_beats(const DrivenRegion& region, const std::vector<double>& signal, double t0_s, double frame_s) {
+RegionBeats compare_beats(const DrivenRegion& region, const std::vector<double>& signal, double t0_s, double frame_s,
+                          int settle_beats) {
   RegionBeats out{region.name, 1 / region.rate_hz};
   const double t_end = t0_s + frame_s * static_cast<double>(signal.size() - 1);
   const int beats = static_cast<int>(std::floor((t_end - t0_s) / out.period_s + 1e-9));
   std::vector<double> before;
-  for (int k = 1; k < beats; ++k) {
+  for (int k = settle_beats; k < beats; ++k) {
     std::vector<double> beat(kPhases);
     for (int m = 0; m < kPhases; ++m) beat[m] = at_time(signal, t0_s, frame_s, t0_s + (k + m / double(kPhases)) * out.period_s);
     const auto [lo, hi] = std::minmax_element(beat.begin(), beat.end());
@@ -69,6 +70,7 @@ MotionReport check_motion(const scene::Scene& scene, const MotionOptions& option
   report.duration_s = options.duration_s > 0 ? options.duration_s : scene.output.duration_s;
   report.frames = static_cast<int>(std::lround(report.duration_s / world.frame_s));
   report.band_m = options.band_m;
+  report.settle_beats = options.settle_beats;
 
   const std::vector<DrivenRegion> regions = driven_regions(scene, world);
   std::vector<PartCrossingWatch> watches;
@@ -77,20 +79,24 @@ MotionReport check_motion(const scene::Scene& scene, const MotionOptions& option
     report.bodies.push_back(scene.organs[o].name + ": " +
                             (body.lattice > 0 ? "lattice " + std::to_string(body.lattice) : std::string("full model")) +
                             " (" + body.body_reason + ")");
-    watches.emplace_back(body.geometry.mesh, options.band_m);
+    const bool anatomy = !body.geometry.mesh.anatomy.empty();
+    if (anatomy) report.anatomies.push_back(scene.organs[o].name);
+    // An empty mesh stands in for an anatomy's: nothing to watch (MotionReport::anatomies).
+    watches.emplace_back(anatomy ? mesh::OrganMesh{} : body.geometry.mesh, options.band_m);
   }
   const bool any_parts =
       std::any_of(watches.begin(), watches.end(), [](const PartCrossingWatch& w) { return w.parts().size() >= 2; });
   const double shortest_two_beats = [&] {
     double s = HUGE_VAL;
-    for (const auto& r : regions) s = std::min(s, 3 / r.rate_hz);
+    for (const auto& r : regions) s = std::min(s, (options.settle_beats + 2) / r.rate_hz);
     return s;
   }();
   if (report.duration_s < shortest_two_beats && !any_parts) {
     throw Error(ExitCode::kUsage, "motion: nothing to check in " + report.scene +
-                                      ": no periodically driven region has three beats in " +
-                                      std::to_string(report.duration_s) +
-                                      " s (the first is left out) and no organ has parts; give a longer --duration");
+                                      ": no periodically driven region has " + std::to_string(options.settle_beats + 2) +
+                                      " beats in " + std::to_string(report.duration_s) + " s (the first " +
+                                      std::to_string(options.settle_beats) +
+                                      " left out) and no organ has parts; give a longer --duration");
   }
 
   std::vector<std::vector<double>> signals(regions.size());
@@ -114,7 +120,7 @@ MotionReport check_motion(const scene::Scene& scene, const MotionOptions& option
     for (std::size_t r = 0; r < regions.size(); ++r) signals[r].push_back(radial_excursion_m(regions[r], stacked));
   }
   for (std::size_t r = 0; r < regions.size(); ++r) {
-    RegionBeats beats = compare_beats(regions[r], signals[r], t0_s, world.frame_s);
+    RegionBeats beats = compare_beats(regions[r], signals[r], t0_s, world.frame_s, options.settle_beats);
     if (beats.beats >= 2) report.regions.push_back(std::move(beats));
   }
   for (std::size_t o = 0; o < world.organs.size(); ++o) {
@@ -131,7 +137,8 @@ std::string motion_text(const MotionReport& r) {
   out << line;
   for (const auto& b : r.bodies) out << "  body " << b << "\n";
   if (!r.regions.empty()) {
-    out << "  beats (radial excursion of each driven region; each beat against the one before, the first left out):\n";
+    out << "  beats (radial excursion of each driven region; each beat against the one before, the first "
+        << (r.settle_beats == 1 ? std::string("") : std::to_string(r.settle_beats) + " ") << "left out):\n";
   }
   for (const auto& g : r.regions) {
     std::snprintf(line, sizeof line, "    %-32s %2d beats of %.3f s, %.3f mm peak to peak, worst change %.2f %% (beat %d)%s\n",
@@ -153,6 +160,9 @@ std::string motion_text(const MotionReport& r) {
                     o.worst.depth_m <= kCrossingTolerance_m ? " (within the tolerance)" : "  PARTS PASS THROUGH");
       out << line;
     }
+  }
+  for (const auto& a : r.anatomies) {
+    out << "  parts of " << a << ": a generated anatomy, its parts labels on one welded wall (not checked)\n";
   }
   std::snprintf(line, sizeof line, "periodic (every beat within %.0f %% of the one before): %s\n", kBeatToBeatTolerancePct,
                 r.regions.empty() ? "no periodic region" : r.periodic() ? "yes" : "no");

@@ -21,14 +21,17 @@ inline constexpr double kCrossingTolerance_m = 1e-4;
 struct MotionOptions {
   double duration_s = 0;   ///< Organ time simulated; 0: the scene's output duration. unit: s
   double band_m = 0.001;   ///< How near another part a vertex is compared (part_crossing.h). unit: m
+  /// Beats left out as the body leaves its rest shape: one for most bodies; a lightly damped
+  /// one (the anatomical heart, 1 ms) still rings out of it through the second.
+  int settle_beats = 1;
 };
 
 /// One periodically driven region's beats, compared each with the one before; the first
-/// beat, out of the rest shape, is left out.
+/// beats, out of the rest shape (MotionOptions::settle_beats), are left out.
 struct RegionBeats {
   std::string name;            ///< "heart.left_ventricle"
   double period_s = 0;         ///< unit: s
-  int beats = 0;               ///< Whole beats compared (after the first).
+  int beats = 0;               ///< Whole beats compared (after the settling ones).
   double peak_to_peak_m = 0;   ///< Of its radial excursion in the last beat. unit: m
   double worst_change_pct = 0; ///< RMS difference from the beat before, % of that beat's peak to peak. unit: %
   int worst_beat = 0;          ///< Which beat (the first is 0) differed most from its predecessor.
@@ -46,9 +49,14 @@ struct MotionReport {
   double duration_s = 0;      ///< unit: s
   int frames = 0;
   double band_m = 0;          ///< Crossings are measured up to this depth (MotionOptions). unit: m
+  int settle_beats = 1;       ///< Beats left out (MotionOptions).
   std::vector<std::string> bodies;  ///< Per organ: its body and why.
   std::vector<RegionBeats> regions;
   std::vector<OrganParts> organs;
+  /// Organs whose parts are not checked: a generated anatomy's parts are labels on one
+  /// welded wall (a septum is part of both ventricles' walls), not surfaces that could pass
+  /// through each other; its moving valve leaflets sit on the walls they hinge from.
+  std::vector<std::string> anatomies;
 
   bool periodic() const;      ///< Every region repeats its beat within the tolerance.
   bool parts_kept() const;    ///< No part passed through another beyond the tolerance.

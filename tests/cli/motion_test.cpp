@@ -1,8 +1,8 @@
 // ctest-labels: slow-under-sanitizers
-// `systole motion` on the shipped heart (beats that repeat: exit 0), on the same heart
-// struck once mid-run (a beat that differs: exit 1, naming the region and the beat), and on
-// the shipped multi-part heart: its parts stay apart in the lattice it gets, and pass
-// through each other on the full model.
+// `systole motion` on the shipped heart (beats that repeat once it has rung out of its rest
+// shape: exit 0), on the same heart struck once mid-run (a beat that differs: exit 1, naming
+// the region and the beat), and on the shipped multi-part heart: its parts stay apart in
+// the lattice it gets, and pass through each other on the full model.
 
 #include <gtest/gtest.h>
 
@@ -15,11 +15,15 @@ namespace systole::test {
 namespace {
 
 TEST(Motion, TheShippedHeartRepeatsItsBeat) {
-  const auto r = run(systole() + " motion " + source("scenes/heart.yaml") + " --duration 3");
+  // The anatomical heart's ventricles are damped lightly (1 ms, so they twist): the right
+  // ventricle's second beat is still 2.4 % off its first, the third within 1.2 % of the
+  // second. Beats 3 and 4 are compared.
+  const auto r = run(systole() + " motion " + source("scenes/heart.yaml") + " --duration 4.2 --settle 2");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("heart.left_ventricle"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("heart.right_ventricle"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("first 2 left out"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("periodic (every beat within 2 % of the one before): yes"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("parts kept apart (no crossing beyond 0.1 mm): yes"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("parts of heart: a generated anatomy"), std::string::npos) << r.output;
 }
 
 TEST(Motion, ABeatDisturbedByAPushIsNotPeriodic) {

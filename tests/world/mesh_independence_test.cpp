@@ -2,7 +2,8 @@
 // The material does not depend on the mesh: the shipped heart at mesh detail 3, 4 and 5
 // (2,502 to 9,641 particles) beats alike - each driven region's peak-to-peak radial
 // excursion within 5 % of the finest mesh's (docs/accuracy.md, "One material at any
-// resolution"). Detail 3 is what scenes/heart.yaml ships, its cheaper setting.
+// resolution"). Detail 3 is what the solid heart's scenes ship, its cheaper setting
+// (tests/support/solid-heart.yaml: scenes/heart.yaml before it took the anatomical heart).
 
 #include <gtest/gtest.h>
 
@@ -22,7 +23,7 @@ namespace {
 /// Per driven region, the peak-to-peak of its vertices' mean distance from the organ's rest
 /// centroid over the second beat (the first settles). unit: m
 std::vector<double> region_excursions(int detail) {
-  scene::Scene s = scene::load(source("scenes/heart.yaml"), {"organs.0.mesh.detail=" + std::to_string(detail)});
+  scene::Scene s = scene::load(source("tests/support/solid-heart.yaml"), {"organs.0.mesh.detail=" + std::to_string(detail)});
   s.output.fps = 60;
   s.output.duration_s = 2 * 60.0 / 72;
   world::World w = world::build_world(s);
