@@ -6,6 +6,8 @@
 #include <limits>
 
 #include "clip/camera_motion.h"
+#include "common/error.h"
+#include "mesh/anatomy.h"
 #include "overlay/title.h"
 #include "render/camera_matrices.h"
 #include "render/color_map.h"
@@ -137,11 +139,9 @@ OverlayPlan::OverlayPlan(const scene::Scene& scene, const world::World& world) :
   const bool titled = std::any_of(views_.begin(), views_.end(), [](const ViewFrame& v) { return !v.title.empty(); });
   empty_ = spec_.empty() && !titled;
   if (empty_) return;
-  volume_mL_.resize(world.organs.size());
-  triangles_.resize(world.organs.size());
   if (spec_.labels.enabled) plan_labels(scene, world);
   if (spec_.legend.enabled) plan_legend(scene, world);
-  for (const auto& t : spec_.traces) plan_trace(scene, world, t);
+  for (std::size_t i = 0; i < spec_.traces.size(); ++i) plan_trace(scene, world, spec_.traces[i], static_cast<int>(i));
 }
 
 void OverlayPlan::plan_views(const scene::Scene& scene) {
@@ -223,26 +223,46 @@ void OverlayPlan::plan_legend(const scene::Scene& scene, const world::World& wor
   }
 }
 
-void OverlayPlan::plan_trace(const scene::Scene& scene, const world::World& world, const scene::TraceOverlay& t) {
+void OverlayPlan::plan_trace(const scene::Scene& scene, const world::World& world, const scene::TraceOverlay& t,
+                             int index) {
   const double clip_s = scene.output.duration_s;
   const int o = organ_index(scene, t.organ);
   const auto& organ = scene.organs[static_cast<std::size_t>(o)];
   overlay::Trace trace;
   trace.window_s = t.window_s > 0 ? t.window_s : clip_s;
   trace.clip_s = clip_s;
-  int volume_organ = -1;
+  int series = -1;
   if (t.signal == scene::TraceSignal::kVolume) {
-    volume_organ = o;
-    trace.title = "volume: " + spaced(organ.name);
+    const mesh::OrganMesh& mesh = world.organs[static_cast<std::size_t>(o)].geometry.mesh;
+    VolumeSeries s;
+    s.organ = o;
+    if (t.chamber.empty()) {
+      s.triangles = mesh.surface.triangles;
+    } else {
+      const auto& cavities = mesh.anatomy.cavities;
+      const auto found = std::find_if(cavities.begin(), cavities.end(),
+                                      [&](const mesh::Cavity& c) { return c.name == t.chamber; });
+      if (found == cavities.end()) {
+        std::string names;
+        for (const mesh::Cavity& c : cavities) names += (names.empty() ? "" : ", ") + c.name;
+        const std::string where = t.origin.file.empty() ? "" : t.origin.file + ":" + std::to_string(t.origin.line) + ": ";
+        throw Error(ExitCode::kDataError,
+                    where + "overlay.traces[" + std::to_string(index) + "].chamber: organ '" + organ.name +
+                        "' has no chamber named '" + t.chamber + "' (" +
+                        (names.empty() ? "its mesh has no generated anatomy, e.g. mesh: {procedural: anatomical_heart}"
+                                       : "chambers: " + names) +
+                        ")");
+      }
+      s.chamber = *found;
+    }
+    trace.title = "volume: " + spaced(t.chamber.empty() ? organ.name : t.chamber);
     trace.unit = "mL";
     trace.color = {120, 200, 255};
     trace.sample_dt_s = 1.0 / fps_;
-    if (std::find(volume_organs_.begin(), volume_organs_.end(), o) == volume_organs_.end()) {
-      volume_organs_.push_back(o);
-      volume_mL_[static_cast<std::size_t>(o)].assign(static_cast<std::size_t>(scene.output.frame_count()), kNaN);
-      const auto& surface = world.organs[static_cast<std::size_t>(o)].geometry.mesh.surface;
-      triangles_[static_cast<std::size_t>(o)] = surface.triangles;
-    }
+    s.mL.assign(static_cast<std::size_t>(scene.output.frame_count()), kNaN);
+    series = static_cast<int>(series_.size());
+    series_.push_back(std::move(s));
+    if (std::find(volume_organs_.begin(), volume_organs_.end(), o) == volume_organs_.end()) volume_organs_.push_back(o);
   } else {
     const auto n = static_cast<std::size_t>(std::ceil(clip_s * kSignalRateHz)) + 1;
     trace.sample_dt_s = 1.0 / kSignalRateHz;
@@ -255,18 +275,24 @@ void OverlayPlan::plan_trace(const scene::Scene& scene, const world::World& worl
     }
   }
   traces_.push_back(std::move(trace));
-  trace_volume_organ_.push_back(volume_organ);
+  trace_series_.push_back(series);
 }
 
 void OverlayPlan::record_volume(int organ, int frame, const Eigen::Matrix3Xd& positions) {
-  auto& history = volume_mL_[static_cast<std::size_t>(organ)];
-  if (frame < 0 || static_cast<std::size_t>(frame) >= history.size()) return;
-  history[static_cast<std::size_t>(frame)] = 1e6 * sim::enclosed_volume(positions, triangles_[static_cast<std::size_t>(organ)]);
+  for (VolumeSeries& s : series_) {
+    if (s.organ != organ || frame < 0 || static_cast<std::size_t>(frame) >= s.mL.size()) continue;
+    const double v = s.triangles.empty() ? mesh::cavity_volume(s.chamber, positions) : sim::enclosed_volume(positions, s.triangles);
+    s.mL[static_cast<std::size_t>(frame)] = 1e6 * v;
+  }
 }
 
 bool OverlayPlan::has_volume(int organ, int frame) const {
-  const auto& history = volume_mL_[static_cast<std::size_t>(organ)];
-  return frame >= 0 && static_cast<std::size_t>(frame) < history.size() && !std::isnan(history[static_cast<std::size_t>(frame)]);
+  // An organ's series are recorded together: its first one answers for all.
+  for (const VolumeSeries& s : series_) {
+    if (s.organ == organ)
+      return frame >= 0 && static_cast<std::size_t>(frame) < s.mL.size() && !std::isnan(s.mL[static_cast<std::size_t>(frame)]);
+  }
+  return false;
 }
 
 void OverlayPlan::capture(int frame, const std::vector<const Eigen::Matrix3Xd*>& positions, OverlayFrame& out) const {
@@ -394,9 +420,9 @@ void OverlayPlan::draw(Image& image, const OverlayFrame& frame) {
   }
   for (std::size_t i = 0; i < traces_.size(); ++i) {
     overlay::Trace& trace = traces_[i];
-    if (const int o = trace_volume_organ_[i]; o >= 0) {
+    if (const int s = trace_series_[i]; s >= 0) {
       // Only what is simulated so far: frames up to this one (later ones may be in the making).
-      const auto& history = volume_mL_[static_cast<std::size_t>(o)];
+      const auto& history = series_[static_cast<std::size_t>(s)].mL;
       trace.values.assign(history.begin(), history.begin() + std::min<std::ptrdiff_t>(frame.frame + 1, history.size()));
       trace.known_until_s = frame.time_s;
     }

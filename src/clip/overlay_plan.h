@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/image.h"
+#include "mesh/anatomy.h"
 #include "overlay/labels.h"
 #include "overlay/legend.h"
 #include "overlay/trace.h"
@@ -29,7 +30,8 @@ struct OverlayFrame {
 class OverlayPlan {
  public:
   /// Resolves the scene's overlay against the built world. Volume traces make the world
-  /// record the organ's enclosed volume at every frame it advances (record_volume).
+  /// record the organ's enclosed volume, or a chamber's, at every frame it advances
+  /// (record_volume). A chamber the organ's anatomy lacks is an error naming the trace.
   OverlayPlan(const scene::Scene& scene, const world::World& world);
   OverlayPlan(const OverlayPlan&) = delete;
   OverlayPlan& operator=(const OverlayPlan&) = delete;
@@ -38,7 +40,7 @@ class OverlayPlan {
   bool empty() const { return empty_; }
   /// Organs whose volume is traced (their index in the world).
   const std::vector<int>& volume_organs() const { return volume_organs_; }
-  /// Records organ `organ`'s volume at `frame` from its render-mesh positions. unit: m
+  /// Records organ `organ`'s traced volumes at `frame` from its render-mesh positions. unit: m
   void record_volume(int organ, int frame, const Eigen::Matrix3Xd& positions);
   /// Whether `frame`'s volume of `organ` is recorded.
   bool has_volume(int organ, int frame) const;
@@ -75,7 +77,7 @@ class OverlayPlan {
   void plan_views(const scene::Scene& scene);
   void plan_labels(const scene::Scene& scene, const world::World& world);
   void plan_legend(const scene::Scene& scene, const world::World& world);
-  void plan_trace(const scene::Scene& scene, const world::World& world, const scene::TraceOverlay& t);
+  void plan_trace(const scene::Scene& scene, const world::World& world, const scene::TraceOverlay& t, int index);
   void layout(int width, int height);
 
   bool empty_ = true;
@@ -87,10 +89,16 @@ class OverlayPlan {
   std::vector<LabelTarget> targets_;
   std::vector<overlay::LegendEntry> legend_;
   std::vector<overlay::Trace> traces_;
-  std::vector<int> trace_volume_organ_;  ///< Per trace: the organ whose volume it shows, or -1.
+  /// A traced volume: the closed render mesh of an organ, or one chamber of its anatomy.
+  struct VolumeSeries {
+    int organ = 0;
+    std::vector<Eigen::Vector3i> triangles;  ///< The whole surface's; empty when a chamber.
+    mesh::Cavity chamber;                    ///< Its lining and rims, when a chamber.
+    std::vector<double> mL;                  ///< Per frame, NaN until recorded. unit: mL
+  };
+  std::vector<int> trace_series_;  ///< Per trace: the volume series it shows, or -1.
   std::vector<int> volume_organs_;
-  std::vector<std::vector<double>> volume_mL_;  ///< Per world organ: per frame, NaN until recorded.
-  std::vector<std::vector<Eigen::Vector3i>> triangles_;  ///< Per world organ: the render mesh's.
+  std::vector<VolumeSeries> series_;
 
   std::unique_ptr<plot::Font> font_;  ///< Loaded on the drawing thread's first frame.
   bool laid_out_ = false;

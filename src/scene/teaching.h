@@ -95,6 +95,7 @@ struct TraceOverlay {
   std::string organ;                 ///< Empty: the first organ.
   std::string region;                ///< kActivation, kEcg: the region whose drive is shown (kEcg: the ventricles').
   std::string atria;                 ///< kEcg: a region whose beats give the P waves; empty: 160 ms before each R.
+  std::string chamber;               ///< kVolume: a cavity of a generated anatomy; empty: the organ's enclosed volume.
   Corner position = Corner::kBottomRight;
   int width_px = 360, height_px = 110;  ///< unit: px at 720 lines
   double window_s = 3;               ///< Sweep width; 0: the whole clip. unit: s

@@ -140,7 +140,8 @@ void summarize_overlay(std::ostringstream& s, const scene::Overlay& ov) {
     const char* signal = t.signal == scene::TraceSignal::kVolume ? "volume"
                          : t.signal == scene::TraceSignal::kEcg  ? "ecg"
                                                                  : "activation";
-    trace << signal << (t.region.empty() ? "" : " of " + t.region) << " trace (";
+    const std::string& of = t.chamber.empty() ? t.region : t.chamber;
+    trace << signal << (of.empty() ? "" : " of " + of) << " trace (";
     if (t.window_s > 0) trace << t.window_s << " s sweep)";
     else trace << "whole clip)";
     parts.push_back(trace.str());

@@ -14,6 +14,7 @@
 #include "clip/camera_framing.h"
 #include "clip/progress.h"
 #include "clip/render_clip.h"
+#include "common/error.h"
 #include "render/camera_matrices.h"
 #include "render/color_map.h"
 #include "scene/load.h"
@@ -192,6 +193,36 @@ TEST(OverlayPlan, VolumeTraceFallsAsTheVentriclesContractAndTheCursorMoves) {
   EXPECT_LE(lowest, 15);
   EXPECT_LT(values[static_cast<std::size_t>(lowest)], values[0] * (1 - 0.005));
   EXPECT_GT(values[20], values[static_cast<std::size_t>(lowest)]);
+  // The trace is the left ventricle's blood, not the heart's: 116 ml at end-diastole
+  // (docs/anatomy.md), where the whole surface encloses several times that.
+  EXPECT_EQ(plan.traces()[volume].title, "volume: left ventricle");
+  EXPECT_GT(values[0], 100);
+  EXPECT_LT(values[0], 130);
+  EXPECT_LT(values[static_cast<std::size_t>(lowest)], 0.7 * values[0]) << "the ventricle ejects";
+}
+
+TEST(OverlayPlan, AChamberTheMeshLacksIsAnErrorNamingTheTraceAndTheChambers) {
+  const std::vector<std::string> size = {"output.width=" + std::to_string(kWidth), "output.height=" + std::to_string(kHeight)};
+  auto message = [](const scene::Scene& s) {
+    const world::World world = world::build_world(s);
+    try {
+      clip::OverlayPlan plan(s, world);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  std::vector<std::string> typo = size;
+  typo.push_back("overlay.traces.1.chamber=left_ventricel");
+  const std::string wrong = message(scene::load(source("scenes/heart-labels.yaml"), typo));
+  EXPECT_NE(wrong.find("heart-labels.yaml:"), std::string::npos) << wrong;
+  EXPECT_NE(wrong.find("overlay.traces[1].chamber"), std::string::npos) << wrong;
+  EXPECT_NE(wrong.find("chambers: left_ventricle, left_atrium, right_ventricle, right_atrium"), std::string::npos)
+      << wrong;
+  std::vector<std::string> kidney = size;  // A generated surface without an anatomy.
+  kidney.push_back("overlay.traces=[{signal: volume, chamber: left_ventricle}]");
+  const std::string none = message(scene::load(source("scenes/kidney.yaml"), kidney));
+  EXPECT_NE(none.find("no generated anatomy"), std::string::npos) << none;
 }
 
 TEST(OverlayPlan, LegendListsEachRegionColour) {

@@ -106,7 +106,7 @@ TEST(Physiology, AFibreTensionTwistsTheVentricle) {
 // The shipped anatomical heart is a normal heart: every figure a cardiologist measures is
 // within its normal range (src/study/physiology.h cites each range's source).
 TEST(Physiology, TheShippedHeartIsNormal) {
-  for (const char* name : {"heart-cutaway"}) {
+  for (const char* name : {"heart", "heart-cutaway"}) {
     const PhysiologyReport r = measure_physiology(scene::load(test::source(std::string("scenes/") + name + ".yaml")));
     EXPECT_TRUE(kEndDiastolicVolume.holds(r.end_diastolic_ml)) << name << ": " << r.end_diastolic_ml << " ml";
     EXPECT_TRUE(kEndSystolicVolume.holds(r.end_systolic_ml)) << name << ": " << r.end_systolic_ml << " ml";
@@ -128,7 +128,7 @@ const SegmentThickening& segment(const PhysiologyReport& r, int aha) {
 
 // A scar on the anterolateral wall: a sphere round that segment's mid-wall, listed after the
 // ventricles so it takes their particles, with no drive (it does not contract) and ten
-// times stiffer (fibrous), as scenes/heart-infarct.yaml does on the solid heart.
+// times stiffer (fibrous), as scenes/heart-infarct.yaml does on the anterior wall.
 scene::Scene with_anterolateral_infarct(scene::Scene s) {
   const mesh::OrganMesh heart = mesh::procedural::anatomical_heart(s.organs[0].mesh.detail);
   const mesh::VentricleLandmarks& lv = heart.anatomy.left_ventricle;
@@ -149,6 +149,21 @@ scene::Scene with_anterolateral_infarct(scene::Scene s) {
   scar.stiffness_scale = 10;
   s.organs[0].regions.insert(s.organs[0].regions.begin() + 5, scar);
   return s;
+}
+
+TEST(Physiology, TheShippedInfarctDoesNotThickenAndTheVentricleEjectsLess) {
+  // scenes/heart-infarct.yaml is heart.yaml with a scar through the anterior wall (segment
+  // 7): that segment is akinetic (Lang 2015: absent or negligible thickening), the remote
+  // inferior wall thickens as before, and the ejection fraction falls.
+  const PhysiologyReport normal = measure_physiology(scene::load(test::source("scenes/heart.yaml")));
+  const PhysiologyReport infarct = measure_physiology(scene::load(test::source("scenes/heart-infarct.yaml")));
+  EXPECT_TRUE(segment(infarct, 7).akinetic()) << segment(infarct, 7).thickening_pct << " %";
+  for (int remote : {9, 10, 11}) {
+    EXPECT_FALSE(segment(infarct, remote).akinetic()) << remote;
+    EXPECT_NEAR(segment(infarct, remote).thickening_pct, segment(normal, remote).thickening_pct, 5) << remote;
+  }
+  EXPECT_LT(infarct.ejection_fraction_pct, normal.ejection_fraction_pct - 4);
+  EXPECT_GT(infarct.end_systolic_ml, normal.end_systolic_ml + 4);
 }
 
 TEST(Physiology, EverySegmentOfANormalHeartThickens) {

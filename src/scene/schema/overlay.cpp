@@ -142,6 +142,11 @@ ValueSpec<Overlay> overlay_spec() {
           field("atria", name_text(), &TraceOverlay::atria,
                 "`ecg`: the atrial region whose beats give the P waves; faster than 4 Hz (flutter, fibrillation): no P "
                 "waves but f-waves following its drive. Default: a P wave 160 ms before each R."),
+          field("chamber", name_text(), &TraceOverlay::chamber,
+                "`volume`: a chamber of a generated anatomy (`anatomical_heart`: left_ventricle, right_ventricle, "
+                "left_atrium, right_atrium): the blood it holds, from its lining with the valve annuli capped, instead "
+                "of the volume the organ's whole surface encloses.")
+              .shown_default("the whole organ"),
           field("position", corner(), &TraceOverlay::position, "Corner of the frame; insets in the same corner stack."),
           field("width", whole<int>(60, 1920), &TraceOverlay::width_px, "Inset width in pixels of a 720-line frame."),
           field("height", whole<int>(30, 1080), &TraceOverlay::height_px,
@@ -153,6 +158,8 @@ ValueSpec<Overlay> overlay_spec() {
         const bool needs_region = t.signal != TraceSignal::kVolume;
         if (needs_region && t.region.empty())
           fail(node.origin, path, "signal activation and ecg need a region: the driven region whose beats are shown");
+        if (t.signal != TraceSignal::kVolume && !t.chamber.empty())
+          fail(origin_of(node, "chamber"), join(path, "chamber"), "chamber applies to signal volume only");
         if (t.signal != TraceSignal::kEcg && !t.atria.empty())
           fail(origin_of(node, "atria"), join(path, "atria"), "atria applies to signal ecg only");
         if (!needs_region && !t.region.empty())
