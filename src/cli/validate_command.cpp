@@ -4,6 +4,7 @@
 #include "cli/command.h"
 #include "clip/camera_framing.h"
 #include "clip/limits.h"
+#include "clip/overlay_plan.h"
 #include "scene/load.h"
 #include "study/physiology.h"
 #include "study/summary.h"
@@ -46,6 +47,9 @@ Command add_validate_command(CLI::App& app) {
             clip::check_world_limits(scene, world, limits);
             const auto placed = clip::with_cameras_placed(scene, world);
             clip::check_organs_in_view(placed, world);
+            // Resolving the overlay against the built meshes checks what only they know (a
+            // volume trace's chamber), as render does.
+            const clip::OverlayPlan overlay(placed, world);
             std::cout << study::summarize(placed, world);
             if (o->physiology) std::cout << study::physiology_text(study::measure_physiology(scene));
             std::cout << "ok\n";

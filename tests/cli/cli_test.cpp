@@ -36,6 +36,15 @@ TEST(Cli, SceneErrorsNameFileLineAndKey) {
   EXPECT_NE(r.output.find("stifness"), std::string::npos) << r.output;
 }
 
+TEST(Cli, ValidateFindsAChamberTheMeshLacks) {
+  // Only the built mesh knows its chambers: validate resolves the overlay as render does.
+  const auto r = run(systole() + " validate " + source("scenes/heart-labels.yaml") +
+                     " -D overlay.traces.1.chamber=left_ventricel");
+  EXPECT_EQ(r.exit_code, 65) << r.output;
+  EXPECT_NE(r.output.find("heart-labels.yaml:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no chamber named 'left_ventricel'"), std::string::npos) << r.output;
+}
+
 TEST(Cli, MissingSceneIsNoInput) {
   const auto r = run(systole() + " validate /nonexistent/scene.yaml");
   EXPECT_EQ(r.exit_code, 66) << r.output;
