@@ -207,7 +207,9 @@ TEST(Scenes, SharedMeshesBeatThroughTheOwnMeshPath) {
       // A single shell (the SOFA and capsule meshes) must weld closed; an atlas file of many
       // overlapping open parts cannot be, and still has to beat.
       const mesh::MeshReport& report = w.organs.at(0).geometry.report;
-      if (report.components == 1) EXPECT_TRUE(report.closed()) << file;
+      if (report.components == 1) {
+        EXPECT_TRUE(report.closed()) << file;
+      }
       world::advance_to_frame(w, 75);  // 2.5 s: three beats.
       EXPECT_TRUE(w.organs.at(0).state.x.allFinite()) << file;
       std::printf("[ own mesh ] %s: %d triangles, three beats fine\n", entry.path().filename().c_str(),
