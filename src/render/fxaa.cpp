@@ -50,20 +50,43 @@ std::uint8_t to_byte(float c) { return static_cast<std::uint8_t>(std::clamp(c, 0
 void Fxaa::apply(Image& image) {
   const int w = image.width, h = image.height;
   if (w < 3 || h < 3) return;
+  // Only where the frame is not the background: a pixel whose diagonal neighbours and itself
+  // all have the first pixel's colour has no contrast and is left as it is, so the pixels
+  // outside the box of the others, grown by one, are skipped without reading them twice.
+  const std::uint8_t* first = image.pixel(0, 0);
+  int x0 = w, x1 = -1, y0 = h, y1 = -1;
+  for (int y = 0; y < h; ++y) {
+    const std::uint8_t* row = image.row(y);
+    int left = 0, right = w - 1;
+    while (left < w && std::equal(row + 3 * left, row + 3 * left + 3, first)) ++left;
+    if (left == w) continue;
+    while (std::equal(row + 3 * right, row + 3 * right + 3, first)) --right;
+    x0 = std::min(x0, left), x1 = std::max(x1, right), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  }
+  if (x1 < 0) return;  // One colour.
+  // Border pixels are left as they are: the corners read outside the frame.
+  const int xa = std::max(1, x0 - 1), xb = std::min(w - 2, x1 + 1);
+  const int ya = std::max(1, y0 - 1), yb = std::min(h - 2, y1 + 1);
+  if (xa > xb || ya > yb) return;
+  // The taps reach half the longest span and a pixel beyond it: those rows of the input are copied.
+  const int reach = static_cast<int>(std::ceil(0.5f * kSpanMax)) + 1;
+  const int copy_a = std::max(0, ya - reach), copy_b = std::min(h - 1, yb + reach);
   source_.width = w;
   source_.height = h;
-  source_.rgb.assign(image.rgb.begin(), image.rgb.end());  // No allocation once sized.
+  source_.rgb.resize(image.rgb.size());  // No allocation once sized.
+  std::copy(image.row(copy_a), image.row(copy_b) + 3 * static_cast<std::size_t>(w), source_.row(copy_a));
   luma_.resize(static_cast<std::size_t>(w) * h);
-  for (std::size_t i = 0; i < luma_.size(); ++i) {
-    const std::uint8_t* p = &source_.rgb[3 * i];
-    luma_[i] = luma(p[0], p[1], p[2]) * (1.0f / 255.0f);
+  for (int y = ya - 1; y <= yb + 1; ++y) {
+    for (int x = xa - 1; x <= xb + 1; ++x) {
+      const std::uint8_t* p = source_.pixel(x, y);
+      luma_[static_cast<std::size_t>(y) * w + x] = luma(p[0], p[1], p[2]) * (1.0f / 255.0f);
+    }
   }
-  // Border pixels are left as they are: the corners read outside the frame.
-  for (int y = 1; y < h - 1; ++y) {
+  for (int y = ya; y <= yb; ++y) {
     const float* above = &luma_[static_cast<std::size_t>(y - 1) * w];
     const float* row = above + w;
     const float* below = row + w;
-    for (int x = 1; x < w - 1; ++x) {
+    for (int x = xa; x <= xb; ++x) {
       const float l_nw = above[x - 1], l_ne = above[x + 1], l_sw = below[x - 1], l_se = below[x + 1];
       const float l_m = row[x];
       const float l_min = std::min({l_m, l_nw, l_ne, l_sw, l_se});
