@@ -33,7 +33,11 @@ void update_valves(ValveMotion& motion, const Eigen::Matrix3Xd& positions, doubl
     const double full = 0.5 * motion.rest_volume_m3[valve.cavity];  // m^3/s
     const double flow = (motion.volume_m3[valve.cavity] - motion.previous_volume_m3[valve.cavity]) / frame_s;
     const double through = valve.inflow ? flow : -flow;
-    const double x = std::clamp((through - 0.05 * full) / (0.95 * full), 0.0, 1.0);
+    // An outflow valve is held shut by the arterial pressure until the ventricle ejects: the
+    // atria's contraction, which squeezes the ventricle slowly (a tenth of ejection's flow or
+    // less), does not open it. Shut below `full`, fully open at twice that.
+    const double shut = valve.inflow ? 0.05 * full : full, open = valve.inflow ? full : 2 * full;
+    const double x = std::clamp((through - shut) / (open - shut), 0.0, 1.0);
     valve.opening = motion.measured ? x * x * (3 - 2 * x) : 0.0;
   }
   motion.measured = true;

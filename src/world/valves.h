@@ -33,9 +33,11 @@ struct ValveMotion {
 ValveMotion valve_motion(const mesh::Anatomy& anatomy, const std::vector<Eigen::Vector3d>& rest_positions);
 
 /// Sets each valve's opening from the flow into or out of its ventricle since the last call,
-/// `frame_s` earlier, with `positions` the surface now (valves closed). A valve is fully open
-/// at a flow of half the ventricle's rest volume a second (about a fifth of peak ejection)
-/// and shut below a twentieth of that.
+/// `frame_s` earlier, with `positions` the surface now (valves closed). An inflow valve is
+/// fully open at a flow of half the ventricle's rest volume a second (about a fifth of peak
+/// ejection) and shut below a twentieth of that; an outflow valve, which the arterial
+/// pressure holds shut until the ventricle ejects, is shut below that flow and fully open at
+/// twice it (the atria's contraction squeezes the ventricle far more slowly).
 void update_valves(ValveMotion& valves, const Eigen::Matrix3Xd& positions, double frame_s);
 
 /// Moves the leaflets of `positions` (valves closed) to their current opening. unit: m
