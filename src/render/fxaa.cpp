@@ -52,7 +52,7 @@ void Fxaa::apply(Image& image) {
   if (w < 3 || h < 3) return;
   // Only where the frame is not the background: a pixel whose diagonal neighbours and itself
   // all have the first pixel's colour has no contrast and is left as it is, so the pixels
-  // outside the box of the others, grown by one, are skipped without reading them twice.
+  // outside the box of the others, grown by one, need no luma and no test.
   const std::uint8_t* first = image.pixel(0, 0);
   int x0 = w, x1 = -1, y0 = h, y1 = -1;
   for (int y = 0; y < h; ++y) {

@@ -34,8 +34,8 @@ void update_valves(ValveMotion& motion, const Eigen::Matrix3Xd& positions, doubl
     const double flow = (motion.volume_m3[valve.cavity] - motion.previous_volume_m3[valve.cavity]) / frame_s;
     const double through = valve.inflow ? flow : -flow;
     // An outflow valve is held shut by the arterial pressure until the ventricle ejects: the
-    // atria's contraction, which squeezes the ventricle slowly (a tenth of ejection's flow or
-    // less), does not open it. Shut below `full`, fully open at twice that.
+    // atria's contraction, which squeezes the ventricle slowly (a seventh of ejection's flow at
+    // most), does not open it. Shut below `full`, fully open at twice that.
     const double shut = valve.inflow ? 0.05 * full : full, open = valve.inflow ? full : 2 * full;
     const double x = std::clamp((through - shut) / (open - shut), 0.0, 1.0);
     valve.opening = motion.measured ? x * x * (3 - 2 * x) : 0.0;
