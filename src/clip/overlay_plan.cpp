@@ -6,11 +6,11 @@
 #include <limits>
 
 #include "clip/camera_motion.h"
-#include "common/error.h"
 #include "mesh/anatomy.h"
 #include "overlay/title.h"
 #include "render/camera_matrices.h"
 #include "render/color_map.h"
+#include "scene/tree.h"
 #include "sim/drive.h"
 #include "sim/model.h"
 
@@ -245,10 +245,8 @@ void OverlayPlan::plan_trace(const scene::Scene& scene, const world::World& worl
       if (found == cavities.end()) {
         std::string names;
         for (const mesh::Cavity& c : cavities) names += (names.empty() ? "" : ", ") + c.name;
-        const std::string where = t.origin.file.empty() ? "" : t.origin.file + ":" + std::to_string(t.origin.line) + ": ";
-        throw Error(ExitCode::kDataError,
-                    where + "overlay.traces[" + std::to_string(index) + "].chamber: organ '" + organ.name +
-                        "' has no chamber named '" + t.chamber + "' (" +
+        scene::fail(t.origin, "overlay.traces[" + std::to_string(index) + "].chamber",
+                    "organ '" + organ.name + "' has no chamber named '" + t.chamber + "' (" +
                         (names.empty() ? "its mesh has no generated anatomy, e.g. mesh: {procedural: anatomical_heart}"
                                        : "chambers: " + names) +
                         ")");
