@@ -1,6 +1,8 @@
 // Cost of one simulation step per solver on organs of about 2.5k, 10k and 40k vertices
 // (icospheres of a beating, volume-keeping body), in springs per second: compare with the
-// machine's limit of a plain spring loop (bench/spring_loop_bench.cpp's figure).
+// machine's limit of a plain spring loop (bench/spring_loop_bench.cpp's figure); and one
+// frame of the shipped heart (scenes/heart.yaml: the anatomical heart's myocardium, the
+// scene's own solver), the simulate stage of its clip alone.
 //
 //   build/bench/sim_bench --benchmark_counters_tabular=true
 
@@ -8,9 +10,11 @@
 
 
 #include "mesh/icosphere.h"
+#include "scene/load.h"
 #include "mesh/inspect.h"
 #include "sim/model.h"
 #include "sim/solvers/step.h"
+#include "world/world.h"
 
 namespace {
 
@@ -89,6 +93,25 @@ void SpringLoopLimit(benchmark::State& bench) {
   bench.counters["springs/s"] = benchmark::Counter(double(bench.iterations()) * sp.size(), benchmark::Counter::kIsRate);
 }
 BENCHMARK(SpringLoopLimit)->DenseRange(4, 6)->Unit(benchmark::kMicrosecond);
+
+/// One 1/30-s frame of scenes/heart.yaml's heart from one beat in (world::advance_to_frame:
+/// its steps at the scene's dt and iterations, the health check, the valves): what
+/// `systole render` reports as "simulate" for that clip, less the surface's normals, without
+/// the other stages competing for the cores.
+void ShippedHeartFrame(benchmark::State& bench) {
+  world::World w = world::build_world(scene::load(SYSTOLE_SOURCE_DIR "/scenes/heart.yaml"));
+  int frame = 30;
+  world::advance_to_frame(w, frame);
+  for (auto _ : bench) {
+    world::advance_to_frame(w, ++frame);
+    benchmark::DoNotOptimize(w.organs[0].state.x.data());
+  }
+  const sim::Model& heart = w.organs.at(0).model;
+  bench.counters["particles"] = heart.particle_count();
+  bench.counters["springs"] = heart.springs.size();
+  bench.counters["steps/frame"] = w.steps_per_frame;
+}
+BENCHMARK(ShippedHeartFrame)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

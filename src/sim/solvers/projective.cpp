@@ -24,37 +24,41 @@ using Ldlt = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
 /// Solves A X = B in place for the factorized A = P^T L D L^T P, all of B's columns in one
 /// pass over L: Eigen's own solve walks L once per column, which made the back-substitution
 /// most of a step's cost. L is unit lower triangular in compressed columns without its
-/// diagonal (SimplicialLDLT's storage).
+/// diagonal (SimplicialLDLT's storage). Each row is held as four lanes (the last ones
+/// padding), so a row update is two vector instructions rather than three scalar ones; every
+/// lane's arithmetic, and its order, is the scalar loop's, bit for bit.
 template <int Columns>
 void solve_in_place(const Ldlt& ldlt, Rows& b) {
+  static_assert(Columns <= 4);
+  using Lanes = Eigen::Array4d;
   const Eigen::Index n = b.rows();
-  Rows work(n, Columns);
+  thread_local std::vector<Lanes> work;  // One allocation per thread, not per solve.
+  work.assign(static_cast<std::size_t>(n), Lanes::Zero());
   const auto& p = ldlt.permutationP();
-  for (Eigen::Index i = 0; i < n; ++i) work.row(p.indices()[i]) = b.row(i);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    Lanes& w = work[static_cast<std::size_t>(p.indices()[i])];
+    for (int c = 0; c < Columns; ++c) w[c] = b(i, c);
+  }
   const Eigen::SparseMatrix<double>& l = ldlt.matrixL().nestedExpression();
   const int* start = l.outerIndexPtr();
   const int* row = l.innerIndexPtr();
   const double* value = l.valuePtr();
-  double* w = work.data();
+  // Row j in registers: L is strictly lower, so the rows a column updates are never j itself.
   for (Eigen::Index j = 0; j < n; ++j) {
-    const double* wj = w + Columns * j;
-    for (int q = start[j]; q < start[j + 1]; ++q) {
-      double* wi = w + Columns * row[q];
-      for (int c = 0; c < Columns; ++c) wi[c] -= value[q] * wj[c];
-    }
+    const Lanes wj = work[static_cast<std::size_t>(j)];
+    for (int q = start[j]; q < start[j + 1]; ++q) work[static_cast<std::size_t>(row[q])] -= value[q] * wj;
   }
   const auto& d = ldlt.vectorD();
-  for (Eigen::Index j = 0; j < n; ++j) {
-    for (int c = 0; c < Columns; ++c) w[Columns * j + c] /= d[j];
-  }
+  for (Eigen::Index j = 0; j < n; ++j) work[static_cast<std::size_t>(j)] /= d[j];
   for (Eigen::Index j = n - 1; j >= 0; --j) {
-    double* wj = w + Columns * j;
-    for (int q = start[j]; q < start[j + 1]; ++q) {
-      const double* wi = w + Columns * row[q];
-      for (int c = 0; c < Columns; ++c) wj[c] -= value[q] * wi[c];
-    }
+    Lanes wj = work[static_cast<std::size_t>(j)];
+    for (int q = start[j]; q < start[j + 1]; ++q) wj -= value[q] * work[static_cast<std::size_t>(row[q])];
+    work[static_cast<std::size_t>(j)] = wj;
   }
-  for (Eigen::Index i = 0; i < n; ++i) b.row(i) = work.row(p.indices()[i]);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Lanes& w = work[static_cast<std::size_t>(p.indices()[i])];
+    for (int c = 0; c < Columns; ++c) b(i, c) = w[c];
+  }
 }
 
 /// A factorized system matrix for one g = h (backward Euler) or 2h/3 (BDF2) and one set of
@@ -63,6 +67,9 @@ struct Factor {
   double gamma_s = 0;               ///< unit: s
   std::vector<bool> grabs_active;   ///< Which grabs' springs are in the matrix.
   std::unique_ptr<Ldlt> ldlt;
+  /// Per spring: k_e and c_e/g, as the matrix has them (each step's right-hand side needs
+  /// them again; two divisions a spring were a fifth of a step). unit: N/m
+  std::vector<double> stiffness, damping_over_gamma;
 
   bool matches(double gamma, const std::vector<bool>& grabs) const {
     return ldlt && gamma_s == gamma && grabs_active == grabs;
@@ -169,9 +176,14 @@ void factorize(const Model& model, const ProjectiveCache& c, double gamma, const
     entries.emplace_back(r, r, m * (1.0 / (gamma * gamma) + model.drag_per_s / gamma));
   }
   const Springs& sp = model.springs;
+  out.stiffness.resize(static_cast<std::size_t>(sp.size()));
+  out.damping_over_gamma.resize(static_cast<std::size_t>(sp.size()));
   for (int j = 0; j < sp.size(); ++j) {
     const double k = 1.0 / sp.compliance_m_per_N[j];
-    const double weight = k + k * sp.damping_s[j] / gamma;
+    const double c_over_g = k * sp.damping_s[j] / gamma;
+    out.stiffness[static_cast<std::size_t>(j)] = k;
+    out.damping_over_gamma[static_cast<std::size_t>(j)] = c_over_g;
+    const double weight = k + c_over_g;
     const int ra = c.free_index[sp.a[j]], rb = c.free_index[sp.b[j]];
     if (ra >= 0) entries.emplace_back(ra, ra, weight);
     if (rb >= 0) entries.emplace_back(rb, rb, weight);
@@ -208,16 +220,15 @@ struct StepSetup {
   std::vector<double> rest_m;
 };
 
-StepSetup set_up(const Model& model, const State& s, const ProjectiveCache& c, bool bdf2, double h, double t_end,
-                 const Eigen::Matrix3Xd& x_new_pinned) {
+StepSetup set_up(const Model& model, const State& s, const ProjectiveCache& c, const Factor& factor, bool bdf2,
+                 double t_end, const Eigen::Matrix3Xd& x_new_pinned) {
   StepSetup out;
   Eigen::Matrix3Xd v_bar;
+  out.gamma = factor.gamma_s;
   if (bdf2) {
-    out.gamma = 2.0 * h / 3.0;
     out.x_tilde = (4.0 * s.x - c.x_old) / 3.0;
     v_bar = (4.0 * s.v - c.v_old) / 3.0;
   } else {
-    out.gamma = h;
     out.x_tilde = s.x;
     v_bar = s.v;
   }
@@ -252,8 +263,8 @@ StepSetup set_up(const Model& model, const State& s, const ProjectiveCache& c, b
   const Springs& sp = model.springs;
   for (int j = 0; j < sp.size(); ++j) {
     const int a = sp.a[j], b = sp.b[j];
-    const double k = 1.0 / sp.compliance_m_per_N[j];
-    const double c_over_g = k * sp.damping_s[j] / g;
+    const double k = factor.stiffness[static_cast<std::size_t>(j)];
+    const double c_over_g = factor.damping_over_gamma[static_cast<std::size_t>(j)];
     const int ra = c.free_index[a], rb = c.free_index[b];
     const Eigen::Vector3d damping = c_over_g * (out.x_tilde.col(a) - out.x_tilde.col(b));
     if (ra >= 0) out.rhs.row(ra) += damping.transpose();
@@ -337,10 +348,11 @@ void one_step(const Model& model, State& s, ProjectiveCache& c, double h) {
   const bool bdf2 = c.history_step_s == h && std::abs(c.history_time_s + h - s.time_s) <= 1e-9 * h;
   Eigen::Matrix3Xd x = s.x;
   move_kinematic_regions(model, t_end, x);
-  const StepSetup setup = set_up(model, s, c, bdf2, h, t_end, x);
+  const double gamma = bdf2 ? 2.0 * h / 3.0 : h;
   Factor& factor = bdf2 ? c.bdf2 : c.backward_euler;
   const std::vector<bool> grabs = active_grabs(model, t_end);
-  if (!factor.matches(setup.gamma, grabs)) factorize(model, c, setup.gamma, grabs, factor);
+  if (!factor.matches(gamma, grabs)) factorize(model, c, gamma, grabs, factor);
+  const StepSetup setup = set_up(model, s, c, factor, bdf2, t_end, x);
   // Start from where the old velocity carries the body: the springs' directions there are
   // close to the solution's.
   for (int i : c.free_particles) x.col(i) = s.x.col(i) + h * s.v.col(i);
