@@ -38,6 +38,7 @@ YAML::Node drive_node(const Drive& d) {
   if (d.phase_rad != 0) n["phase"] = quantity(d.phase_rad, "rad");
   if (d.delay_s != 0) n["delay"] = quantity(d.delay_s, "s");
   if (d.waveform == Waveform::kCardiac) n["systolic_fraction"] = plain(d.systolic_fraction);
+  if (d.waveform == Waveform::kCardiac && d.peak_fraction != 0.5) n["peak_fraction"] = plain(d.peak_fraction);
   if (d.waveform == Waveform::kBreathing) n["inhale_fraction"] = plain(d.inhale_fraction);
   if (d.waveform == Waveform::kFourier) {
     YAML::Node list(YAML::NodeType::Sequence);

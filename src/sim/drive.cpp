@@ -17,6 +17,14 @@ double raised_cosine(double u, double width) {
   return 0.5 * (1.0 - std::cos(kTwoPi * u / width));
 }
 
+/// The same pulse with its peak at `peak` x width: a rising half-cosine, then a falling one.
+double skewed_raised_cosine(double u, double width, double peak) {
+  if (u >= width) return 0.0;
+  const double rise = peak * width;
+  if (u < rise) return 0.5 * (1.0 - std::cos(std::numbers::pi * u / rise));
+  return 0.5 * (1.0 + std::cos(std::numbers::pi * (u - rise) / (width - rise)));
+}
+
 }  // namespace
 
 double drive_cycles(const Drive& drive, double t_s, double ramp_s) {
@@ -43,8 +51,10 @@ double waveform_value(const Drive& drive, double u) {
       return std::clamp(phi, 0.0, 1.0);
     }
     case Waveform::kCardiac:
-      // Contraction occupies the systolic fraction of the beat; diastole is at rest.
-      return raised_cosine(u, drive.systolic_fraction);
+      // Contraction occupies the systolic fraction of the beat; diastole is at rest. (The
+      // symmetric pulse keeps its own formula: the same bits as before peak_fraction came.)
+      if (drive.peak_fraction == 0.5) return raised_cosine(u, drive.systolic_fraction);
+      return skewed_raised_cosine(u, drive.systolic_fraction, drive.peak_fraction);
     case Waveform::kBreathing: {
       // Active inhale (rising half-cosine), then a slower passive exhale.
       const double in = drive.inhale_fraction;
@@ -122,7 +132,8 @@ double highest_frequency_hz(const Drive& drive) {
     case Waveform::kFourier:
       return rate * double(std::max<std::size_t>(1, drive.harmonics.size()));
     case Waveform::kCardiac:
-      return rate / drive.systolic_fraction;
+      // The shorter half of the pulse, as a half-period of a cosine.
+      return rate / (2.0 * std::min(drive.peak_fraction, 1.0 - drive.peak_fraction) * drive.systolic_fraction);
     case Waveform::kBreathing:
       return rate / (2.0 * std::min(drive.inhale_fraction, 1.0 - drive.inhale_fraction));
     case Waveform::kSamples:

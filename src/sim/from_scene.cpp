@@ -66,6 +66,7 @@ Drive drive_params(const scene::Drive& d) {
   out.delay_s = d.delay_s;
   for (const auto& h : d.harmonics) out.harmonics.push_back({h.amplitude, h.phase_rad});
   out.systolic_fraction = d.systolic_fraction;
+  out.peak_fraction = d.peak_fraction;
   out.inhale_fraction = d.inhale_fraction;
   out.samples = d.samples;
   out.irregularity = d.irregularity;

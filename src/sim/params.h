@@ -30,7 +30,7 @@ enum class Waveform {
   kNone,       ///< No drive: the region is passive.
   kSine,       ///< phi = (1 - cos(2 pi f t + phase)) / 2.
   kFourier,    ///< phi = 1/2 + sum_k a_k cos(2 pi k f t + phase_k), harmonics from k = 1.
-  kCardiac,    ///< Raised-cosine contraction over the systolic fraction of each beat.
+  kCardiac,    ///< Raised-cosine contraction over the systolic fraction of each beat, peaking at peak_fraction of it.
   kBreathing,  ///< Asymmetric: raised-cosine inhale over inhale_fraction, slower exhale.
   kSamples,    ///< A table of phi over one period, interpolated periodically.
 };
@@ -49,6 +49,7 @@ struct Drive {
   double delay_s = 0;               ///< Activation delay. unit: s
   std::vector<Harmonic> harmonics;  ///< kFourier: harmonic k = index + 1.
   double systolic_fraction = 0.35;  ///< kCardiac: part of the period spent contracting. unit: 1
+  double peak_fraction = 0.5;       ///< kCardiac: where in that part the contraction peaks. unit: 1
   double inhale_fraction = 0.4;     ///< kBreathing: part of the period spent inhaling. unit: 1
   std::vector<double> samples;      ///< kSamples: phi over one period, evenly spaced.
   double irregularity = 0;          ///< Seeded beat-to-beat jitter of the period (0 = regular). unit: 1

@@ -36,6 +36,33 @@ TEST(Drive, CardiacContractsOnlyDuringSystole) {
   for (double t = 0.31; t < 0.99; t += 0.05) EXPECT_EQ(activation(d, t, 10), 0.0) << "diastole at rest, t=" << t;
 }
 
+TEST(Drive, CardiacPeaksWherePeakFractionSays) {
+  auto d = make(sim::Waveform::kCardiac, 1.0);
+  d.systolic_fraction = 0.5;
+  d.peak_fraction = 0.6;
+  EXPECT_NEAR(activation(d, 0.3, 10), 1.0, 1e-12) << "peak at 0.6 of the 0.5-s window";
+  EXPECT_LT(activation(d, 0.25, 10), 1.0);
+  EXPECT_LT(activation(d, 0.35, 10), 1.0);
+  // Half-way up the rise and down the fall: 0.15 s and 0.4 s.
+  EXPECT_NEAR(activation(d, 0.15, 10), 0.5, 1e-12);
+  EXPECT_NEAR(activation(d, 0.4, 10), 0.5, 1e-12);
+  for (double t = 0.0; t < 0.5; t += 0.01) {
+    EXPECT_LE(activation(d, t, 10), activation(d, t + 0.01, 10) + (t + 0.01 > 0.3 ? 1.0 : 0.0)) << "rises to the peak, t=" << t;
+  }
+  for (double t = 0.51; t < 0.99; t += 0.05) EXPECT_EQ(activation(d, t, 10), 0.0) << "diastole at rest, t=" << t;
+  // The shorter half sets the highest frequency: a half-cosine of 0.2 s.
+  EXPECT_NEAR(highest_frequency_hz(d), 1.0 / (2 * 0.2), 1e-12);
+}
+
+TEST(Drive, ASymmetricPeakIsTheClassicPulse) {
+  auto d = make(sim::Waveform::kCardiac, 1.2);
+  d.systolic_fraction = 0.36;
+  auto skewed = d;
+  skewed.peak_fraction = 0.5 + 1e-15;  // Through the skewed formula, which must agree.
+  for (double t = 0; t < 1; t += 0.01) EXPECT_NEAR(activation(skewed, t, 10), activation(d, t, 10), 1e-9) << t;
+  EXPECT_DOUBLE_EQ(highest_frequency_hz(d), 1.2 / 0.36);
+}
+
 TEST(Drive, DelayShiftsTheWave) {
   auto atria = make(sim::Waveform::kCardiac, 1.2);
   auto ventricles = atria;

@@ -386,6 +386,9 @@ ValueSpec<Drive> drive_spec() {
                 "Activation delay (atria before ventricles)."),
           field("systolic_fraction", number(open(0.05, 0.95)), &Drive::systolic_fraction,
                 "`cardiac`: part of the period spent contracting."),
+          field("peak_fraction", number(open(0.05, 0.95)), &Drive::peak_fraction,
+                "`cardiac`: where in its systolic part the contraction peaks (0.5: a symmetric pulse; "
+                "higher: a slow shortening and a quick relaxation, as myocardial strain goes)."),
           field("inhale_fraction", number(open(0.05, 0.95)), &Drive::inhale_fraction,
                 "`breathing`: part of the period spent inhaling."),
           field("harmonics", list(harmonic, 0, 32, "list of harmonics"), &Drive::harmonics,
