@@ -1,9 +1,11 @@
 #include "render/fxaa.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 namespace systole::render {
 namespace {
@@ -43,6 +45,30 @@ Rgb sample(const Image& image, float x, float y) {
   return {c[0], c[1], c[2]};
 }
 
+/// The first index in [0, n) at which a and b differ, or n: eight bytes a comparison.
+std::size_t first_difference(const std::uint8_t* a, const std::uint8_t* b, std::size_t n) {
+  std::size_t i = 0;
+  for (std::uint64_t u, v; i + 8 <= n; i += 8) {
+    std::memcpy(&u, a + i, 8);
+    std::memcpy(&v, b + i, 8);
+    if (u != v) break;
+  }
+  while (i < n && a[i] == b[i]) ++i;
+  return i;
+}
+
+/// The last index in [0, n) at which a and b differ, or n when they are equal.
+std::size_t last_difference(const std::uint8_t* a, const std::uint8_t* b, std::size_t n) {
+  std::size_t end = n;  // Every index from end on is equal.
+  for (std::uint64_t u, v; end >= 8; end -= 8) {
+    std::memcpy(&u, a + end - 8, 8);
+    std::memcpy(&v, b + end - 8, 8);
+    if (u != v) break;
+  }
+  while (end > 0 && a[end - 1] == b[end - 1]) --end;
+  return end == 0 ? n : end - 1;
+}
+
 std::uint8_t to_byte(float c) { return static_cast<std::uint8_t>(std::clamp(c, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
 }  // namespace
@@ -54,14 +80,17 @@ void Fxaa::apply(Image& image) {
   // all have the first pixel's colour has no contrast and is left as it is, so the pixels
   // outside the box of the others, grown by one, need no luma and no test.
   const std::uint8_t* first = image.pixel(0, 0);
+  const std::size_t row_bytes = 3 * static_cast<std::size_t>(w);
+  background_.resize(row_bytes);
+  for (std::size_t k = 0; k < row_bytes; ++k) background_[k] = first[k % 3];
   int x0 = w, x1 = -1, y0 = h, y1 = -1;
   for (int y = 0; y < h; ++y) {
     const std::uint8_t* row = image.row(y);
-    int left = 0, right = w - 1;
-    while (left < w && std::equal(row + 3 * left, row + 3 * left + 3, first)) ++left;
-    if (left == w) continue;
-    while (std::equal(row + 3 * right, row + 3 * right + 3, first)) --right;
-    x0 = std::min(x0, left), x1 = std::max(x1, right), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    const std::size_t left = first_difference(row, background_.data(), row_bytes);
+    if (left == row_bytes) continue;
+    const std::size_t right = last_difference(row, background_.data(), row_bytes);
+    x0 = std::min(x0, static_cast<int>(left / 3)), x1 = std::max(x1, static_cast<int>(right / 3));
+    y0 = std::min(y0, y), y1 = std::max(y1, y);
   }
   if (x1 < 0) return;  // One colour.
   // Border pixels are left as they are: the corners read outside the frame.
@@ -76,22 +105,43 @@ void Fxaa::apply(Image& image) {
   source_.rgb.resize(image.rgb.size());  // No allocation once sized.
   std::copy(image.row(copy_a), image.row(copy_b) + 3 * static_cast<std::size_t>(w), source_.row(copy_a));
   luma_.resize(static_cast<std::size_t>(w) * h);
+  // luma()'s three products looked up by byte (the same floats, added in the same order).
+  static const std::array<std::array<float, 256>, 3> weighted = [] {
+    std::array<std::array<float, 256>, 3> t{};
+    for (int v = 0; v < 256; ++v) {
+      t[0][static_cast<std::size_t>(v)] = 0.299f * static_cast<float>(v);
+      t[1][static_cast<std::size_t>(v)] = 0.587f * static_cast<float>(v);
+      t[2][static_cast<std::size_t>(v)] = 0.114f * static_cast<float>(v);
+    }
+    return t;
+  }();
   for (int y = ya - 1; y <= yb + 1; ++y) {
-    for (int x = xa - 1; x <= xb + 1; ++x) {
-      const std::uint8_t* p = source_.pixel(x, y);
-      luma_[static_cast<std::size_t>(y) * w + x] = luma(p[0], p[1], p[2]) * (1.0f / 255.0f);
+    const std::uint8_t* p = source_.pixel(xa - 1, y);
+    float* out = &luma_[static_cast<std::size_t>(y) * w];
+    for (int x = xa - 1; x <= xb + 1; ++x, p += 3) {
+      out[x] = (weighted[0][p[0]] + weighted[1][p[1]] + weighted[2][p[2]]) * (1.0f / 255.0f);
     }
   }
+  edge_.resize(static_cast<std::size_t>(w));
   for (int y = ya; y <= yb; ++y) {
     const float* above = &luma_[static_cast<std::size_t>(y - 1) * w];
     const float* row = above + w;
     const float* below = row + w;
+    // The contrast test for the whole row first, without branches (the compiler vectorizes
+    // it: most pixels fail it, and a branch per pixel was most of the filter's time); then
+    // the few that pass. min and max are exact, so the test is the same as per pixel.
     for (int x = xa; x <= xb; ++x) {
+      const float l_m = row[x];
+      const float l_min = std::min(std::min(std::min(above[x - 1], above[x + 1]), std::min(below[x - 1], below[x + 1])), l_m);
+      const float l_max = std::max(std::max(std::max(above[x - 1], above[x + 1]), std::max(below[x - 1], below[x + 1])), l_m);
+      edge_[static_cast<std::size_t>(x)] = l_max - l_min >= std::max(kEdgeThresholdMin, l_max * kEdgeThreshold) ? 1u : 0u;
+    }
+    for (int x = xa; x <= xb; ++x) {
+      if (!edge_[static_cast<std::size_t>(x)]) continue;
       const float l_nw = above[x - 1], l_ne = above[x + 1], l_sw = below[x - 1], l_se = below[x + 1];
       const float l_m = row[x];
       const float l_min = std::min({l_m, l_nw, l_ne, l_sw, l_se});
       const float l_max = std::max({l_m, l_nw, l_ne, l_sw, l_se});
-      if (l_max - l_min < std::max(kEdgeThresholdMin, l_max * kEdgeThreshold)) continue;
 
       // Along the edge: across the luma gradient (image rows grow downwards).
       float dx = -((l_nw + l_ne) - (l_sw + l_se));

@@ -9,6 +9,7 @@
 // more than MSAA (llvmpipe's texture sampler); here flat pixels - most of a frame - stop
 // after five luma reads. Figures: docs/performance.md.
 
+#include <cstdint>
 #include <vector>
 
 #include "common/image.h"
@@ -23,6 +24,10 @@ class Fxaa {
 
  private:
   std::vector<float> luma_;  ///< Per pixel of the input, unit: 1 (0..1).
+  /// Per pixel of the row being filtered: 1 where the contrast is enough to filter. Not a
+  /// char: a char store may alias the luma, which kept the compiler from vectorizing the test.
+  std::vector<std::uint32_t> edge_;
+  std::vector<std::uint8_t> background_;  ///< A row of the frame's first pixel's colour.
   Image source_;             ///< The input, read while `image` is written.
 };
 
