@@ -65,10 +65,10 @@ void emit(vec3 srgb) {
 
 // The sRGB transfer function (IEC 61966-2-1). Its power segment, c^(1/2.4), is a quintic in
 // u = c^(1/4) (two square roots; a least-squares Chebyshev fit of u^(5/3) on the segment)
-// instead of pow: llvmpipe's pow is a log2 and an exp2 polynomial each, and three of them a
-// fragment were a fifth of the heart's drawing. The fit is within 0.005 of an 8-bit step of
-// the exact curve, so at most one framebuffer value in a thousand, one that lies on a
-// rounding boundary, comes out a step apart (tests/render/srgb_test.cpp).
+// instead of pow: llvmpipe's pow is a log2 and an exp2 polynomial each, and three a fragment
+// cost the heart clip 0.27 s of its 5.9 s of CPU without the encoder (docs/performance.md).
+// The fit is within 0.005 of an 8-bit step of the exact curve, so only a framebuffer value
+// on a rounding boundary (one in a thousand) comes out a step apart (tests/render/srgb_test.cpp).
 vec3 linear_to_srgb(vec3 c) {
   c = clamp(c, 0.0, 1.0);
   vec3 lo = c * 12.92;

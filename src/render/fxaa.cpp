@@ -127,9 +127,9 @@ void Fxaa::apply(Image& image) {
     const float* above = &luma_[static_cast<std::size_t>(y - 1) * w];
     const float* row = above + w;
     const float* below = row + w;
-    // The contrast test for the whole row first, without branches (the compiler vectorizes
-    // it: most pixels fail it, and a branch per pixel was most of the filter's time); then
-    // the few that pass. min and max are exact, so the test is the same as per pixel.
+    // The contrast test for the whole row first, without branches, so the compiler
+    // vectorizes it (most pixels fail it); then the few that pass. min and max are exact,
+    // so the test is the same as per pixel.
     for (int x = xa; x <= xb; ++x) {
       const float l_m = row[x];
       const float l_min = std::min(std::min(std::min(above[x - 1], above[x + 1]), std::min(below[x - 1], below[x + 1])), l_m);
