@@ -104,6 +104,22 @@ TEST(Physiology, TheAtriaContractionOpensNoOutflowValve) {
   EXPECT_EQ(outflow_openings, 2) << physiology_text(r);
 }
 
+// With nothing to push against, the ventricles empty as fast as their drive shortens them:
+// a drive that shortens over most of its window (as myocardial strain does, the shipped
+// heart's peak_fraction) ejects for longer than the symmetric pulse, and as much.
+TEST(Physiology, AStrainShapedDriveEjectsForLonger) {
+  const scene::Scene symmetric = anatomical_heart(0.22);
+  scene::Scene strain_shaped = symmetric;
+  for (scene::Region& r : strain_shaped.organs[0].regions) {
+    if (r.drive.delay_s == 0.16) r.drive.systolic_fraction = 0.58, r.drive.peak_fraction = 0.6;
+  }
+  const PhysiologyReport before = measure_physiology(symmetric, 1), after = measure_physiology(strain_shaped, 1);
+  EXPECT_GT(after.ejection_pct, before.ejection_pct + 8) << before.ejection_pct << " -> " << after.ejection_pct << " %";
+  EXPECT_NEAR(after.ejection_fraction_pct, before.ejection_fraction_pct, 4);
+  EXPECT_GT(time_of(after, "aortic_valve", false), time_of(before, "aortic_valve", false) + 80)
+      << "the aortic valve closes later";
+}
+
 TEST(Physiology, AFibreTensionTwistsTheVentricle) {
   // With the active strain alone the lining's and the outside's opposite helices cancel each
   // other's shear; the fibres' tension lets the outside win (docs/anatomy.md, "Twist").
