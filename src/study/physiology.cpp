@@ -66,7 +66,7 @@ std::vector<SegmentThickening> segment_thickening(const mesh::VentricleLandmarks
 std::vector<std::string> PhysiologyReport::outside_normal() const {
   std::vector<std::string> out;
   auto check = [&](const char* name, double value, const NormalRange& range) {
-    if (!range.holds(value)) out.push_back(name);
+    if (!std::isnan(value) && !range.holds(value)) out.push_back(name);  // A figure not measured is not judged.
   };
   check("end-diastolic volume", end_diastolic_ml, kEndDiastolicVolume);
   check("end-systolic volume", end_systolic_ml, kEndSystolicVolume);
@@ -75,6 +75,7 @@ std::vector<std::string> PhysiologyReport::outside_normal() const {
   check("wall thickening", wall_thickening_pct, kWallThickening);
   check("twist", twist_deg, kTwist);
   check("ejection time", ejection_pct, kEjectionShare);
+  check("isovolumic relaxation", isovolumic_relaxation_ms, kIsovolumicRelaxation);
   return out;
 }
 
@@ -196,6 +197,19 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   }
   std::sort(report.valve_events.begin(), report.valve_events.end(),
             [](const ValveEvent& a, const ValveEvent& b) { return a.after_activation_ms < b.after_activation_ms; });
+  // Isovolumic relaxation: from the aortic closure to the mitral opening that follows it
+  // (in this beat, or the next one's at the same time in the beat).
+  const auto event = [&](const char* valve, bool opens, double from_ms) {
+    double first = std::numeric_limits<double>::quiet_NaN();
+    for (const ValveEvent& e : report.valve_events) {
+      if (e.valve != valve || e.opens != opens) continue;
+      const double t = e.after_activation_ms < from_ms ? e.after_activation_ms + 1000 * report.beat_s : e.after_activation_ms;
+      if (std::isnan(first) || t < first) first = t;
+    }
+    return first;
+  };
+  const double aortic_closes = event("aortic_valve", false, 0);
+  if (!std::isnan(aortic_closes)) report.isovolumic_relaxation_ms = event("mitral_valve", true, aortic_closes) - aortic_closes;
   return report;
 }
 
@@ -203,8 +217,12 @@ std::string physiology_text(const PhysiologyReport& r) {
   std::string out;
   char line[256];
   auto figure = [&](const char* name, double value, const char* unit, const NormalRange& range) {
-    std::snprintf(line, sizeof line, "  %-26s %7.1f %-4s normal %g-%g %s (%s)\n", name, value, unit, range.low, range.high,
-                  range.holds(value) ? "  " : "!!", range.source);
+    if (std::isnan(value)) {
+      std::snprintf(line, sizeof line, "  %-26s not measured (normal %g-%g %s)\n", name, range.low, range.high, unit);
+    } else {
+      std::snprintf(line, sizeof line, "  %-26s %7.1f %-4s normal %g-%g %s (%s)\n", name, value, unit, range.low, range.high,
+                    range.holds(value) ? "  " : "!!", range.source);
+    }
     out += line;
   };
   std::snprintf(line, sizeof line, "physiology of %s in %s: beat %.0f ms, measured from %.3f s (the %s's activation), sampled every %.1f ms\n",
@@ -232,6 +250,7 @@ std::string physiology_text(const PhysiologyReport& r) {
                 r.apical_rotation_deg, r.basal_rotation_deg, r.end_systole_ms);
   out += line;
   figure("ejection (aortic open)", r.ejection_pct, "%", kEjectionShare);
+  figure("isovolumic relaxation", r.isovolumic_relaxation_ms, "ms", kIsovolumicRelaxation);
   std::snprintf(line, sizeof line, "  myocardial volume varies by %.1f %% over the beat\n", r.muscle_volume_change_pct);
   out += line;
   out += "  valve events (ms after the left ventricle's activation):\n";

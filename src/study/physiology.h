@@ -6,6 +6,7 @@
 // of an apical and a basal ring, and when each valve opens and closes. docs/anatomy.md
 // gives the normal ranges and their sources.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ inline const NormalRange kWallThickening{30, 50, "Sheehan 1986; Azhari 1993 (sys
 inline const NormalRange kTwist{10, 20, "Sengupta 2008; Notomi 2005 (peak LV twist 10-20 deg)"};
 /// Ejection (aortic valve open) as a share of the beat at 60-80 bpm: 270-330 ms of 750-1000 ms.
 inline const NormalRange kEjectionShare{25, 40, "Weissler 1968; Guyton & Hall ch. 9 (ejection 0.27-0.3 s)"};
+/// Isovolumic relaxation: the aortic valve's closure to the mitral valve's opening, when the
+/// ventricle relaxes with both shut. Normal means by age 50-87 ms, +-2 SD 32-101 ms.
+inline const NormalRange kIsovolumicRelaxation{50, 100, "Nagueh et al. 2009, J Am Soc Echocardiogr 22:107 (IVRT by age)"};
 
 struct ChamberVolume {
   std::string name;          ///< "left_ventricle", ...
@@ -72,6 +76,9 @@ struct PhysiologyReport {
   double muscle_volume_change_pct = 0;  ///< Largest change of the myocardium's volume over the beat.
   std::vector<ValveEvent> valve_events;
   double ejection_pct = 0;           ///< Share of the beat the aortic valve is open. unit: %
+  /// The aortic valve's closure to the mitral valve's next opening, to the frame (NaN when
+  /// either is missing). unit: ms
+  double isovolumic_relaxation_ms = std::numeric_limits<double>::quiet_NaN();
   /// Names of the figures outside their normal range (empty: a normal heart).
   std::vector<std::string> outside_normal() const;
 };

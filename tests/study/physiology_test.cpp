@@ -134,9 +134,10 @@ TEST(Physiology, AFibreTensionTwistsTheVentricle) {
 }
 
 // The shipped anatomical heart is a normal heart: every figure a cardiologist measures is
-// within its normal range (src/study/physiology.h cites each range's source). The ejection
-// time is in range because the ventricles' drive shortens them as slowly as myocardial
-// strain does (peak_fraction); the isovolumic phases, which need the blood, are not measured.
+// within its normal range (src/study/physiology.h cites each range's source) but the
+// isovolumic relaxation. The ejection time is in range because the ventricles' drive shortens
+// them as slowly as myocardial strain does (peak_fraction); the isovolumic phases need the
+// blood.
 TEST(Physiology, TheShippedHeartIsNormal) {
   for (const char* name : {"heart", "heart-cutaway"}) {
     const PhysiologyReport r = measure_physiology(scene::load(test::source(std::string("scenes/") + name + ".yaml")));
@@ -147,7 +148,11 @@ TEST(Physiology, TheShippedHeartIsNormal) {
     EXPECT_TRUE(kWallThickening.holds(r.wall_thickening_pct)) << name << ": " << r.wall_thickening_pct << " %";
     EXPECT_TRUE(kTwist.holds(r.twist_deg)) << name << ": " << r.twist_deg << " deg";
     EXPECT_TRUE(kEjectionShare.holds(r.ejection_pct)) << name << ": " << r.ejection_pct << " % of the beat";
-    EXPECT_TRUE(r.outside_normal().empty()) << name << ":\n" << physiology_text(r);
+    // With no blood the mitral valve opens as the aortic one closes, within a frame (33 ms),
+    // where in vivo the ventricle relaxes 50-100 ms with both shut (docs/anatomy.md, "Not
+    // yet: Blood"). When the blood comes, this turns into the normal range's check.
+    EXPECT_LT(r.isovolumic_relaxation_ms, 1000 * r.frame_s + 1) << name;
+    EXPECT_EQ(r.outside_normal(), std::vector<std::string>{"isovolumic relaxation"}) << name << ":\n" << physiology_text(r);
   }
 }
 
