@@ -239,12 +239,10 @@ void OverlayPlan::plan_trace(const scene::Scene& scene, const world::World& worl
     if (t.chamber.empty()) {
       s.triangles = mesh.surface.triangles;
     } else {
-      const auto& cavities = mesh.anatomy.cavities;
-      const auto found = std::find_if(cavities.begin(), cavities.end(),
-                                      [&](const mesh::Cavity& c) { return c.name == t.chamber; });
-      if (found == cavities.end()) {
+      const mesh::Cavity* found = mesh.anatomy.cavity(t.chamber);
+      if (found == nullptr) {
         std::string names;
-        for (const mesh::Cavity& c : cavities) names += (names.empty() ? "" : ", ") + c.name;
+        for (const mesh::Cavity& c : mesh.anatomy.cavities) names += (names.empty() ? "" : ", ") + c.name;
         scene::fail(t.origin, "overlay.traces[" + std::to_string(index) + "].chamber",
                     "organ '" + organ.name + "' has no chamber named '" + t.chamber + "' (" +
                         (names.empty() ? "its mesh has no generated anatomy, e.g. mesh: {procedural: anatomical_heart}"

@@ -32,10 +32,8 @@ HeartFrame heart_frame(const mesh::OrganMesh& mesh) {
   f.apex = x[a.left_ventricle.apex];
   f.axis = (f.apex - f.annulus).normalized();
   Eigen::Vector3d left = Eigen::Vector3d::Zero(), right = Eigen::Vector3d::Zero();
-  for (const auto& c : a.cavities) {
-    if (c.name == "left_ventricle") left = lining_centroid(c, x);
-    if (c.name == "right_ventricle") right = lining_centroid(c, x);
-  }
+  if (const mesh::Cavity* c = a.cavity("left_ventricle")) left = lining_centroid(*c, x);
+  if (const mesh::Cavity* c = a.cavity("right_ventricle")) right = lining_centroid(*c, x);
   f.side = right - left;
   f.side = (f.side - f.side.dot(f.axis) * f.axis).normalized();
   return f;

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -88,6 +89,13 @@ struct Anatomy {
   std::vector<int> enclosed_vertices;
 
   bool empty() const { return myocardium.empty(); }
+  /// The cavity named `name` ("left_ventricle", ...), or null.
+  const Cavity* cavity(std::string_view name) const {
+    for (const Cavity& c : cavities) {
+      if (c.name == name) return &c;
+    }
+    return nullptr;
+  }
 };
 
 /// Volume enclosed by a cavity's lining at `positions`, each rim closed by a fan about its

@@ -23,7 +23,9 @@ struct Rgb {
 Rgb operator+(Rgb a, Rgb b) { return {a.r + b.r, a.g + b.g, a.b + b.b}; }
 Rgb operator*(float s, Rgb a) { return {s * a.r, s * a.g, s * a.b}; }
 
-float luma(float r, float g, float b) { return 0.299f * r + 0.587f * g + 0.114f * b; }
+constexpr std::array<float, 3> kLumaWeights = {0.299f, 0.587f, 0.114f};  // Rec. 601, of R, G and B.
+
+float luma(float r, float g, float b) { return kLumaWeights[0] * r + kLumaWeights[1] * g + kLumaWeights[2] * b; }
 
 /// Bilinear sample at (x, y) in pixel units (pixel centres at integers), clamped at the border.
 Rgb sample(const Image& image, float x, float y) {
@@ -108,10 +110,8 @@ void Fxaa::apply(Image& image) {
   // luma()'s three products looked up by byte (the same floats, added in the same order).
   static const std::array<std::array<float, 256>, 3> weighted = [] {
     std::array<std::array<float, 256>, 3> t{};
-    for (int v = 0; v < 256; ++v) {
-      t[0][static_cast<std::size_t>(v)] = 0.299f * static_cast<float>(v);
-      t[1][static_cast<std::size_t>(v)] = 0.587f * static_cast<float>(v);
-      t[2][static_cast<std::size_t>(v)] = 0.114f * static_cast<float>(v);
+    for (std::size_t k = 0; k < 3; ++k) {
+      for (std::size_t v = 0; v < 256; ++v) t[k][v] = kLumaWeights[k] * static_cast<float>(v);
     }
     return t;
   }();

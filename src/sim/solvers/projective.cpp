@@ -67,9 +67,9 @@ struct Factor {
   double gamma_s = 0;               ///< unit: s
   std::vector<bool> grabs_active;   ///< Which grabs' springs are in the matrix.
   std::unique_ptr<Ldlt> ldlt;
-  /// Per spring: k_e and c_e/g, as the matrix has them (each step's right-hand side needs
-  /// them again; two divisions a spring were a fifth of a step). unit: N/m
-  std::vector<double> stiffness, damping_over_gamma;
+  /// Per spring: c_e/g, as the matrix has it (each step's right-hand side needs it again).
+  /// unit: N/m
+  std::vector<double> damping_over_gamma;
 
   bool matches(double gamma, const std::vector<bool>& grabs) const {
     return ldlt && gamma_s == gamma && grabs_active == grabs;
@@ -100,6 +100,9 @@ struct ProjectiveCache : SolverCache {
   double material = 0;  ///< material_fingerprint of the model the factors are of.
   std::vector<int> free_index;  ///< Per particle: its row in the system, or -1 (pinned).
   std::vector<int> free_particles;
+  /// Per spring: k_e = 1 / compliance, worked out once (a division a spring a step was a
+  /// tenth of the step). unit: N/m
+  std::vector<double> stiffness;
   Factor backward_euler, bdf2;
   VolumeHessian volume;
   long steps = 0;  ///< Steps taken, counting from the cache's creation.
@@ -116,6 +119,7 @@ struct ProjectiveCache : SolverCache {
     copy->material = material;
     copy->free_index = free_index;
     copy->free_particles = free_particles;
+    copy->stiffness = stiffness;
     copy->x_old = x_old;
     copy->v_old = v_old;
     copy->history_time_s = history_time_s;
@@ -153,6 +157,8 @@ ProjectiveCache& cache_for(const Model& model, State& s) {
     fresh->free_index[i] = static_cast<int>(fresh->free_particles.size());
     fresh->free_particles.push_back(i);
   }
+  fresh->stiffness.resize(static_cast<std::size_t>(model.springs.size()));
+  for (int j = 0; j < model.springs.size(); ++j) fresh->stiffness[static_cast<std::size_t>(j)] = 1.0 / model.springs.compliance_m_per_N[j];
   c = fresh.get();
   s.solver_cache.reset(std::move(fresh));
   return *c;
@@ -176,12 +182,10 @@ void factorize(const Model& model, const ProjectiveCache& c, double gamma, const
     entries.emplace_back(r, r, m * (1.0 / (gamma * gamma) + model.drag_per_s / gamma));
   }
   const Springs& sp = model.springs;
-  out.stiffness.resize(static_cast<std::size_t>(sp.size()));
   out.damping_over_gamma.resize(static_cast<std::size_t>(sp.size()));
   for (int j = 0; j < sp.size(); ++j) {
-    const double k = 1.0 / sp.compliance_m_per_N[j];
+    const double k = c.stiffness[static_cast<std::size_t>(j)];
     const double c_over_g = k * sp.damping_s[j] / gamma;
-    out.stiffness[static_cast<std::size_t>(j)] = k;
     out.damping_over_gamma[static_cast<std::size_t>(j)] = c_over_g;
     const double weight = k + c_over_g;
     const int ra = c.free_index[sp.a[j]], rb = c.free_index[sp.b[j]];
@@ -263,7 +267,7 @@ StepSetup set_up(const Model& model, const State& s, const ProjectiveCache& c, c
   const Springs& sp = model.springs;
   for (int j = 0; j < sp.size(); ++j) {
     const int a = sp.a[j], b = sp.b[j];
-    const double k = factor.stiffness[static_cast<std::size_t>(j)];
+    const double k = c.stiffness[static_cast<std::size_t>(j)];
     const double c_over_g = factor.damping_over_gamma[static_cast<std::size_t>(j)];
     const int ra = c.free_index[a], rb = c.free_index[b];
     const Eigen::Vector3d damping = c_over_g * (out.x_tilde.col(a) - out.x_tilde.col(b));
