@@ -166,12 +166,23 @@ struct Target {
   Origin origin;
 };
 
+/// The blood in an anatomical heart's ventricles (sim/circulation.h); absent: none.
+struct Blood {
+  bool enabled = false;             ///< The scene has the block.
+  double aortic_pressure_Pa = 0;    ///< The left ventricle's afterload. unit: Pa
+  double pulmonary_pressure_Pa = 0; ///< The right ventricle's. unit: Pa
+  double aortic_elastance_Pa_per_m3 = 0;     ///< How the aortic pressure rises with the volume ejected. unit: Pa/m^3
+  double pulmonary_elastance_Pa_per_m3 = 0;  ///< The pulmonary pressure's. unit: Pa/m^3
+  double filling_pressure_Pa = 0;   ///< The atria's: an inflow valve opens below it. unit: Pa
+};
+
 struct Organ {
   std::string name;
   MeshSource mesh;
   Transform transform;
   Material material;
   Body body;
+  Blood blood;
   std::vector<Region> regions;
   Target target;                ///< enabled: `systole tune` fits the regions to it.
   ColorBy color_by = ColorBy::kMaterial;

@@ -44,7 +44,7 @@ std::optional<double> take_number(std::string_view& text) {
   return value;
 }
 
-const std::array<DimensionInfo, 13> kDimensions = {{
+const std::array<DimensionInfo, 14> kDimensions = {{
     {"number", {}, false, R"("0.5")"},
     {"length", {{"m", 1}, {"cm", 0.01}, {"mm", 0.001}}, false, R"("2 cm" or "0.02 m")"},
     {"mass", {{"kg", 1}, {"g", 0.001}}, false, R"("300 g" or "0.3 kg")"},
@@ -52,13 +52,14 @@ const std::array<DimensionInfo, 13> kDimensions = {{
     {"frequency", {{"Hz", 1}, {"bpm", 1.0 / 60}, {"/min", 1.0 / 60}}, true, R"("72 bpm" or "1.2 Hz")"},
     {"angle", {{"deg", std::numbers::pi / 180}, {"rad", 1}}, true, R"("30 deg" or "0.5 rad")"},
     {"stiffness", {{"N/m", 1}}, false, R"("400 N/m")"},
-    {"pressure", {{"Pa", 1}, {"kPa", 1000}}, false, R"("20 kPa" or "20000 Pa")"},
+    {"pressure", {{"Pa", 1}, {"kPa", 1000}, {"mmHg", 133.322}}, false, R"("20 kPa", "20000 Pa" or "35 mmHg")"},
     {"rate", {{"1/s", 1}}, false, R"("1 1/s")"},
     {"acceleration", {{"m/s^2", 1}}, false, R"("-9.81 m/s^2")"},
     {"force", {{"N", 1}}, false, R"("2 N")"},
     {"angular speed", {{"deg/s", std::numbers::pi / 180}, {"rad/s", 1}, {"rpm", 2 * std::numbers::pi / 60}}, true,
      R"("20 deg/s" or "3 rpm")"},
     {"level", {{"dB", 1}}, true, R"("-6 dB")"},
+    {"elastance", {{"Pa/ml", 1e6}, {"kPa/ml", 1e9}, {"mmHg/ml", 133.322e6}}, true, R"("60 Pa/ml" or "0.45 mmHg/ml")"},
 }};
 
 std::string expectation(const DimensionInfo& d) {

@@ -26,6 +26,7 @@ enum class Dimension {
   kForce,         ///< N; a bare number is newtons.
   kAngularSpeed,  ///< deg/s, rad/s, rpm; unit required (except 0).
   kLevel,         ///< dB (a loudness ratio, kept in dB: not converted); unit required (except 0).
+  kElastance,     ///< Pa/ml, kPa/ml, mmHg/ml (pressure per volume); unit required (except 0).
 };
 
 struct Unit {

@@ -96,6 +96,13 @@ OrganParams organ_params(const scene::Organ& organ) {
   const scene::Body& b = organ.body;
   p.body = {b.mass_kg, b.stiffness_N_per_m, b.damping_s, b.volume_stiffness_Pa, b.drag_per_s,
             b.bending_N_per_m, b.lattice, drive_params(b.volume_drive), b.fibre_tension};
+  const scene::Blood& blood = organ.blood;
+  p.blood.enabled = blood.enabled;
+  p.blood.aortic_Pa = blood.aortic_pressure_Pa;
+  p.blood.pulmonary_Pa = blood.pulmonary_pressure_Pa;
+  p.blood.aortic_elastance_Pa_per_m3 = blood.aortic_elastance_Pa_per_m3;
+  p.blood.pulmonary_elastance_Pa_per_m3 = blood.pulmonary_elastance_Pa_per_m3;
+  p.blood.filling_Pa = blood.filling_pressure_Pa;
   p.regions = region_params(organ.regions);
   return p;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mesh/geometry.h"
+#include "sim/circulation.h"
 #include "sim/constraints/volume.h"
 #include "sim/params.h"
 
@@ -98,6 +99,7 @@ struct Model {
   Eigen::VectorXd inverse_mass;             ///< unit: 1/kg; 0 = pinned.
   Springs springs;
   VolumeConstraint volume;
+  Circulation circulation;                  ///< The ventricles' blood (anatomical heart); empty: none.
   std::vector<RegionParams> regions;       ///< Drives by region index.
   /// Per region: the beat boundaries in cycles when its drive is irregular (seeded), else empty.
   std::vector<std::vector<double>> beat_boundaries;

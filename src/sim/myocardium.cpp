@@ -1,10 +1,83 @@
 #include "sim/myocardium.h"
 
 #include <algorithm>
+#include <map>
 
 #include "sim/model.h"
 
 namespace systole::sim {
+namespace {
+
+/// A ventricle's cavity over the body's particles: each lining vertex where the embedding
+/// carries it, a cap across each annulus fanned from the rim's centre (mesh::cavity_volume's
+/// closure), every triangle turned to face out of the blood.
+Chamber chamber_of(const mesh::Cavity& cavity, const Embedding& e, const Eigen::Matrix3Xd& rest) {
+  Chamber chamber;
+  chamber.name = cavity.name;
+  std::map<int, int> point_of;  // Render vertex -> point.
+  std::vector<std::map<int, double>> terms;
+  std::vector<Eigen::Vector3d> offsets;
+  auto point = [&](int v) {
+    auto [it, added] = point_of.try_emplace(v, static_cast<int>(terms.size()));
+    if (added) {
+      std::map<int, double> t;
+      for (int k = 0; k < 8; ++k) t[e.node(k, v)] += e.weight(k, v);
+      terms.push_back(std::move(t));
+      offsets.push_back(e.offset.col(v));
+    }
+    return it->second;
+  };
+  for (const Eigen::Vector3i& t : cavity.lining) chamber.triangles.emplace_back(point(t[0]), point(t[2]), point(t[1]));
+  for (const std::vector<int>& rim : cavity.rims) {
+    std::map<int, double> centre;
+    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+    const double share = 1.0 / static_cast<double>(rim.size());
+    for (int v : rim) {
+      for (const auto& [particle, weight] : terms[point(v)]) centre[particle] += share * weight;
+      offset += share * offsets[point(v)];
+    }
+    const int c = static_cast<int>(terms.size());
+    terms.push_back(std::move(centre));
+    offsets.push_back(offset);
+    for (std::size_t i = 0; i < rim.size(); ++i) chamber.triangles.emplace_back(point(rim[i]), c, point(rim[(i + 1) % rim.size()]));
+  }
+  chamber.point_offset.resize(3, static_cast<Eigen::Index>(offsets.size()));
+  chamber.point_begin.push_back(0);
+  for (std::size_t p = 0; p < terms.size(); ++p) {
+    chamber.point_offset.col(static_cast<Eigen::Index>(p)) = offsets[p];
+    for (const auto& [particle, weight] : terms[p]) {
+      chamber.term_particle.push_back(particle);
+      chamber.term_weight.push_back(weight);
+    }
+    chamber.point_begin.push_back(static_cast<int>(chamber.term_particle.size()));
+  }
+  chamber.rest_m3 = chamber_volume(chamber, rest);
+  return chamber;
+}
+
+/// The ventricles' blood: every cavity a valve opens into, the left one against the aortic
+/// pressure, the right one against the pulmonary.
+Circulation circulation_of(const OrganParams& organ, const mesh::Anatomy& anatomy, const Embedding& e,
+                           const Eigen::Matrix3Xd& rest) {
+  Circulation circulation;
+  if (!organ.blood.enabled) return circulation;
+  circulation.filling_Pa = organ.blood.filling_Pa;
+  for (const mesh::Cavity& cavity : anatomy.cavities) {
+    const bool ventricle = std::any_of(anatomy.valves.begin(), anatomy.valves.end(),
+                                       [&](const mesh::Valve& v) { return v.chamber == cavity.name; });
+    if (ventricle) {
+      circulation.chambers.push_back(chamber_of(cavity, e, rest));
+      const bool left = cavity.name == "left_ventricle";
+      Chamber& chamber = circulation.chambers.back();
+      chamber.afterload_Pa = left ? organ.blood.aortic_Pa : organ.blood.pulmonary_Pa;
+      chamber.arterial_elastance_Pa_per_m3 =
+          left ? organ.blood.aortic_elastance_Pa_per_m3 : organ.blood.pulmonary_elastance_Pa_per_m3;
+    }
+  }
+  return circulation;
+}
+
+}  // namespace
 
 ReducedBody build_myocardium_model(const OrganParams& organ, const mesh::OrganGeometry& geometry,
                                    const ModelOptions& options) {
@@ -47,6 +120,7 @@ ReducedBody build_myocardium_model(const OrganParams& organ, const mesh::OrganGe
     e.offset.col(v) = geometry.mesh.surface.positions[v] - carried;
   }
   body.model = build_model(organ, std::move(parts), options);
+  body.model.circulation = circulation_of(organ, geometry.mesh.anatomy, e, body.model.rest_positions);
   return body;
 }
 

@@ -90,10 +90,21 @@ struct BodyParams {
 };
 
 /// One organ as the simulator sees it.
+/// The blood of an anatomical heart's ventricles (sim/circulation.h).
+struct BloodParams {
+  bool enabled = false;
+  double aortic_Pa = 0;     ///< unit: Pa
+  double pulmonary_Pa = 0;  ///< unit: Pa
+  double aortic_elastance_Pa_per_m3 = 0;     ///< unit: Pa/m^3
+  double pulmonary_elastance_Pa_per_m3 = 0;  ///< unit: Pa/m^3
+  double filling_Pa = 0;    ///< unit: Pa
+};
+
 struct OrganParams {
   std::string name;
   std::string where;  ///< "file:line:column: " of the organ in its scene, for messages; may be empty.
   BodyParams body;
+  BloodParams blood;
   std::vector<RegionParams> regions;
 };
 

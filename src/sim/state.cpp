@@ -14,6 +14,12 @@ State initial_state(const Model& model) {
   s.force = Eigen::Matrix3Xd::Zero(3, n);
   s.attachment_lambda = Eigen::Matrix3Xd::Zero(3, n);  // Written only while a coupling is passed to step.
   s.attachment_target = s.attachment_lambda;
+  for (const Chamber& chamber : model.circulation.chambers) {
+    ChamberState c;
+    c.volume_m3 = chamber.rest_m3;
+    c.pressure_Pa = model.circulation.filling_Pa;
+    s.chambers.push_back(c);
+  }
   return s;
 }
 

@@ -49,6 +49,7 @@ struct State {
   Eigen::VectorXd spring_lambda;     ///< XPBD multipliers of the last substep; force = lambda / h^2. unit: N s^2
   double volume_lambda = 0;          ///< unit: N s^2 / m^2
   Eigen::Matrix3Xd attachment_lambda;  ///< Per particle, the attachments' multipliers of the last substep; force = lambda / h^2. unit: N s^2
+  std::vector<ChamberState> chambers;  ///< Per model.circulation chamber: its phase, volume and pressure.
 
   // Scratch reused by every step so stepping never allocates.
   Eigen::Matrix3Xd x_prev;           ///< Positions at the start of the substep. unit: m

@@ -114,6 +114,21 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   std::vector<Eigen::Matrix3Xd> shapes;
   std::vector<std::vector<double>> volumes, openings;
   Eigen::Matrix3Xd x;
+  // A heart with blood: its valves open by its ventricles' phases, which change between
+  // solver steps; every step's are kept, so the valve events have the step's resolution.
+  std::vector<double> step_times;
+  std::vector<std::vector<bool>> step_open;
+  if (body.model.circulation.enabled()) {
+    world.after_step = [&](int o, const world::OrganBody& b) {
+      if (o != organ) return;
+      std::vector<bool> open;
+      for (const auto& valve : b.valves.valves) {
+        open.push_back(valve.chamber >= 0 && world::valve_open(b.state.chambers[static_cast<std::size_t>(valve.chamber)].phase, valve.inflow));
+      }
+      step_times.push_back(b.state.time_s);
+      step_open.push_back(std::move(open));
+    };
+  }
   for (int f = 1; f <= last; ++f) {
     world::advance_to_frame(world, f);
     if (f < first) continue;
@@ -180,19 +195,27 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
     report.muscle_volume_change_pct =
         std::max(report.muscle_volume_change_pct, 100 * std::abs(muscle_volume(anatomy.muscle, shapes[i]) / muscle0 - 1));
   }
-  // Valve events: where the opening leaves or returns to 0, between frames, within the beat.
+  // Valve events: where the opening leaves or returns to 0, between frames (or, with blood,
+  // between steps), within the beat.
+  const bool by_step = !step_times.empty();
+  const std::vector<double>& event_times = by_step ? step_times : times;
   for (std::size_t v = 0; v < body.valves.valves.size(); ++v) {
-    for (std::size_t i = 1; i < times.size(); ++i) {
-      const bool was_open = openings[i - 1][v] > 0, is_open = openings[i][v] > 0;
+    const auto open_at = [&](std::size_t i) { return by_step ? bool(step_open[i][v]) : openings[i][v] > 0; };
+    for (std::size_t i = 1; i < event_times.size(); ++i) {
+      const bool was_open = open_at(i - 1), is_open = open_at(i);
       if (was_open == is_open) continue;
-      const double t = 0.5 * (times[i - 1] + times[i]);
+      const double t = 0.5 * (event_times[i - 1] + event_times[i]);
       if (t < start || t >= start + report.beat_s) continue;
       report.valve_events.push_back({anatomy.valves[v].name, is_open, 1000 * (t - start)});
     }
     if (anatomy.valves[v].name == "aortic_valve") {
-      int open_frames = 0;
-      for (int i : beat) open_frames += openings[i][v] > 0;
-      report.ejection_pct = 100.0 * open_frames / static_cast<double>(beat.size());
+      int open = 0, all = 0;
+      for (std::size_t i = 0; i < event_times.size(); ++i) {
+        if (event_times[i] < start - 1e-9 || event_times[i] >= start + report.beat_s - 1e-9) continue;
+        ++all;
+        open += open_at(i);
+      }
+      report.ejection_pct = 100.0 * open / static_cast<double>(all);
     }
   }
   std::sort(report.valve_events.begin(), report.valve_events.end(),

@@ -4,7 +4,8 @@
 
 namespace systole::world {
 
-ValveMotion valve_motion(const mesh::Anatomy& anatomy, const std::vector<Eigen::Vector3d>& rest_positions) {
+ValveMotion valve_motion(const mesh::Anatomy& anatomy, const std::vector<Eigen::Vector3d>& rest_positions,
+                         const sim::Circulation& circulation) {
   ValveMotion motion;
   motion.cavities = anatomy.cavities;
   for (const mesh::Cavity& cavity : motion.cavities) motion.rest_volume_m3.push_back(mesh::cavity_volume(cavity, rest_positions));
@@ -20,15 +21,27 @@ ValveMotion valve_motion(const mesh::Anatomy& anatomy, const std::vector<Eigen::
     for (std::size_t c = 0; c < motion.cavities.size(); ++c) {
       if (motion.cavities[c].name == valve.chamber) leaflets.cavity = static_cast<int>(c);
     }
+    for (std::size_t c = 0; c < circulation.chambers.size(); ++c) {
+      if (circulation.chambers[c].name == valve.chamber) leaflets.chamber = static_cast<int>(c);
+    }
     motion.valves.push_back(std::move(leaflets));
   }
   return motion;
 }
 
-void update_valves(ValveMotion& motion, const Eigen::Matrix3Xd& positions, double frame_s) {
+bool valve_open(sim::ChamberPhase phase, bool inflow) {
+  return phase == (inflow ? sim::ChamberPhase::kFilling : sim::ChamberPhase::kEjection);
+}
+
+void update_valves(ValveMotion& motion, const Eigen::Matrix3Xd& positions, double frame_s,
+                   const std::vector<sim::ChamberState>& chambers) {
   motion.previous_volume_m3.swap(motion.volume_m3);
   for (std::size_t c = 0; c < motion.cavities.size(); ++c) motion.volume_m3[c] = mesh::cavity_volume(motion.cavities[c], positions);
   for (ValveMotion::Leaflets& valve : motion.valves) {
+    if (valve.chamber >= 0) {
+      valve.opening = valve_open(chambers[static_cast<std::size_t>(valve.chamber)].phase, valve.inflow) ? 1.0 : 0.0;
+      continue;
+    }
     if (valve.cavity < 0) continue;
     const double full = 0.5 * motion.rest_volume_m3[valve.cavity];  // m^3/s
     const double flow = (motion.volume_m3[valve.cavity] - motion.previous_volume_m3[valve.cavity]) / frame_s;

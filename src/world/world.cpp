@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "scene/tree.h"
 #include "sim/from_scene.h"
 #include "sim/myocardium.h"
 #include "sim/solvers/step.h"
@@ -87,11 +88,19 @@ World build_world(const scene::Scene& scene) {
     sim::OrganParams params = sim::organ_params(organ);
     params.body.lattice = choice.lattice;
     const sim::ModelOptions options = sim::model_options(scene, organ.name, w.dt_s);
+    if (organ.blood.enabled && (!choice.myocardium || scene.solver.method != scene::SolverMethod::kProjective)) {
+      std::ostringstream m;
+      m << where(organ.origin) << ": organs." << organ.name << ".blood: "
+        << (choice.myocardium ? "the blood is held by the projective solver; set solver.method: projective"
+                              : "blood fills the generated anatomical heart's ventricles (mesh: {procedural: "
+                                "anatomical_heart} with body.lattice auto or 0); this organ has none");
+      throw Error(ExitCode::kDataError, m.str());
+    }
     if (choice.myocardium) {
       sim::ReducedBody myocardium = sim::build_myocardium_model(params, body.geometry, options);
       body.model = std::move(myocardium.model);
       body.embedding = std::move(myocardium.embedding);
-      body.valves = valve_motion(body.geometry.mesh.anatomy, body.geometry.mesh.surface.positions);
+      body.valves = valve_motion(body.geometry.mesh.anatomy, body.geometry.mesh.surface.positions, body.model.circulation);
     } else if (choice.lattice > 0) {
       sim::ReducedBody reduced = sim::build_reduced_model(params, body.geometry, options);
       body.model = std::move(reduced.model);
@@ -172,7 +181,7 @@ void advance_to_frame(World& w, int frame) {
       // once for the valves (which measure it with the leaflets closed) and the watch.
       if (!body.embedding.empty() && (folds_due || !body.valves.empty())) {
         sim::embed(body.embedding, body.state.x, w.scratch_positions);
-        if (!body.valves.empty()) update_valves(body.valves, w.scratch_positions, w.frame_s);
+        if (!body.valves.empty()) update_valves(body.valves, w.scratch_positions, w.frame_s, body.state.chambers);
         open_valves(body.valves, w.scratch_positions);
       }
       if (!folds_due) continue;

@@ -483,6 +483,29 @@ ValueSpec<Material> material_spec() {
   });
 }
 
+ValueSpec<Blood> blood_spec() {
+  const auto pressure = [] { return quantity(Dimension::kPressure, closed(0, 1e6)); };
+  return map<Blood>(
+      {
+          field("aortic_pressure", pressure(), &Blood::aortic_pressure_Pa,
+                "The left ventricle's afterload: the aortic valve opens when the ventricle's pressure "
+                "reaches it, and the ejecting ventricle pushes against it. On the body's own scale: its "
+                "muscle's isovolumic pressure (docs/anatomy.md, \"Blood\")."),
+          field("pulmonary_pressure", pressure(), &Blood::pulmonary_pressure_Pa,
+                "The right ventricle's afterload, as aortic_pressure for the pulmonary valve."),
+          field("aortic_elastance", quantity(Dimension::kElastance, closed(0, 1e12)), &Blood::aortic_elastance_Pa_per_m3,
+                "How the aortic pressure rises as the left ventricle ejects, per volume ejected (Sunagawa's "
+                "effective arterial elastance): the artery fills, so the valve shuts against a higher pressure "
+                "than it opened at. 0 = a constant afterload."),
+          field("pulmonary_elastance", quantity(Dimension::kElastance, closed(0, 1e12)), &Blood::pulmonary_elastance_Pa_per_m3,
+                "The pulmonary artery's, as aortic_elastance for the right ventricle."),
+          field("filling_pressure", pressure(), &Blood::filling_pressure_Pa,
+                "The atria's pressure: an inflow valve (mitral, tricuspid) opens when its relaxing "
+                "ventricle's pressure falls below it, and the filling ventricle is pushed out with it."),
+      },
+      [](const Node&, Blood& b, const std::string&, const Context&) { b.enabled = true; });
+}
+
 ValueSpec<Body> body_spec() {
   return map<Body>({
       field("mass", quantity(Dimension::kMass, open_closed(0, 1000)), &Body::mass_kg,
@@ -550,6 +573,11 @@ ValueSpec<Organ> organ_spec() {
               .shown_default("strain [-0.15, 0.15]; activation [0, 1]"),
           field("clip", clip_spec(), &Organ::clip, "Cuts the organ open along a plane.").shown_default("none"),
           field("body", body_spec(), &Organ::body, "The soft body's physical parameters."),
+          field("blood", blood_spec(), &Organ::blood,
+                "The blood in an anatomical heart's ventricles: while both of a ventricle's valves are "
+                "shut it keeps the cavity's volume, and its pressure opens them (Wiggers' four phases; "
+                "docs/anatomy.md, \"Blood\"). Needs the generated myocardium and solver.method: projective.")
+              .shown_default("none"),
           field("regions", list(region_spec(), 0, 256, "list of regions"), &Organ::regions,
                 "Parts with their own rhythm and stiffness, applied in order."),
           field("collider", boolean(), &Organ::collider,

@@ -1,5 +1,6 @@
 #include "sim/solvers/projective.h"
 
+#include <Eigen/LU>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <cmath>
@@ -313,14 +314,59 @@ void refresh_volume_hessian(const Model& model, ProjectiveCache& c, const Factor
   v.step = c.steps;
 }
 
+/// The ventricles' blood for one step (sim/circulation.h): per chamber whose valves are both
+/// shut, g0 = grad V at the step's start (free rows) and z = A^-1 g0, the direction in which
+/// the global step moves the body to hold the chamber's volume.
+struct HeldChambers {
+  std::vector<int> chamber;
+  std::vector<Rows> g0, z;
+};
+
+HeldChambers hold_chambers(const Model& model, const State& s, const ProjectiveCache& c, const Factor& factor) {
+  HeldChambers held;
+  const int n = static_cast<int>(c.free_particles.size());
+  Eigen::Matrix3Xd gradient;
+  for (std::size_t k = 0; k < s.chambers.size(); ++k) {
+    if (!isovolumic(s.chambers[k].phase)) continue;
+    chamber_volume(model.circulation.chambers[k], s.x, gradient);
+    Rows g(n, 3);
+    for (int r = 0; r < n; ++r) g.row(r) = gradient.col(c.free_particles[r]).transpose();
+    Rows z = g;
+    solve_in_place<3>(*factor.ldlt, z);
+    held.chamber.push_back(static_cast<int>(k));
+    held.g0.push_back(std::move(g));
+    held.z.push_back(std::move(z));
+  }
+  return held;
+}
+
+/// The pressure a chamber's lining is pushed out with: the afterload while it ejects, the
+/// filling pressure while it fills; none while its volume is held (the multiplier is). unit: Pa
+double load_Pa(const Circulation& circulation, const Chamber& chamber, const ChamberState& state) {
+  const ChamberPhase phase = state.phase;
+  if (phase == ChamberPhase::kEjection) return chamber.afterload_Pa + chamber.arterial_elastance_Pa_per_m3 * (state.shut_m3 - state.volume_m3);
+  if (phase == ChamberPhase::kFilling) return circulation.filling_Pa;
+  return 0;
+}
+
 /// One local/global iteration from the iterate x (every particle; pinned ones already at
 /// their new place): writes the new free positions into x.
 void iterate(const Model& model, State& s, const ProjectiveCache& c, const Factor& factor, const StepSetup& setup,
-             const VolumeHessian& hessian, double t_end, Eigen::Matrix3Xd& x) {
+             const VolumeHessian& hessian, const HeldChambers& held, double t_end, Eigen::Matrix3Xd& x) {
   const int n = static_cast<int>(c.free_particles.size());
   const bool volume = model.volume.enabled;
   Rows rhs = setup.rhs;
   add_projections(model, setup, c, x, rhs);
+  // The chambers at the iterate: their volumes and gradients, the loads on their linings.
+  const std::size_t chambers = s.chambers.size();
+  std::vector<double> chamber_m3(chambers);
+  std::vector<Eigen::Matrix3Xd> chamber_gradient(chambers);
+  for (std::size_t k = 0; k < chambers; ++k) {
+    chamber_m3[k] = chamber_volume(model.circulation.chambers[k], x, chamber_gradient[k]);
+    const double load = load_Pa(model.circulation, model.circulation.chambers[k], s.chambers[k]);
+    if (load == 0) continue;
+    for (int r = 0; r < n; ++r) rhs.row(r) += load * chamber_gradient[k].col(c.free_particles[r]).transpose();
+  }
   if (volume) {
     // A quasi-Newton step on the volume energy k_V/2 (V - V0(t))^2 with the Hessian
     // k_V g0 g0^T of the step's start (VolumeHessian): (A + k_V g0 g0^T) y = rhs +
@@ -343,6 +389,33 @@ void iterate(const Model& model, State& s, const ProjectiveCache& c, const Facto
     const double k_v = 1.0 / model.volume.compliance_m5_per_N;
     rhs -= (k_v * hessian.g.cwiseProduct(rhs).sum() / (1.0 + k_v * hessian.g_dot_z)) * hessian.z;
   }
+  if (!held.chamber.empty()) {
+    // The held chambers' volumes, linearized at the iterate: y + sum_j z_j mu_j with
+    // g_i . (y + sum_j z_j mu_j - x) = V_shut,i - V_i(x). The multiplier mu_i pushes the
+    // lining along grad V_i: it is the chamber's pressure.
+    const Eigen::Index m = static_cast<Eigen::Index>(held.chamber.size());
+    Eigen::MatrixXd coupling(m, m);
+    Eigen::VectorXd residual(m);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const int k = held.chamber[static_cast<std::size_t>(i)];
+      const Eigen::Matrix3Xd& g = chamber_gradient[static_cast<std::size_t>(k)];
+      double g_dot_step = 0;
+      Eigen::VectorXd g_dot_z = Eigen::VectorXd::Zero(m);
+      for (int r = 0; r < n; ++r) {
+        const int p = c.free_particles[r];
+        const Eigen::Vector3d gp = g.col(p);
+        g_dot_step += gp.dot(rhs.row(r).transpose() - x.col(p));
+        for (Eigen::Index j = 0; j < m; ++j) g_dot_z[j] += gp.dot(held.z[static_cast<std::size_t>(j)].row(r).transpose());
+      }
+      coupling.row(i) = g_dot_z.transpose();
+      residual[i] = s.chambers[static_cast<std::size_t>(k)].shut_m3 - chamber_m3[static_cast<std::size_t>(k)] - g_dot_step;
+    }
+    const Eigen::VectorXd mu = coupling.partialPivLu().solve(residual);
+    for (Eigen::Index j = 0; j < m; ++j) {
+      rhs += mu[j] * held.z[static_cast<std::size_t>(j)];
+      s.chambers[static_cast<std::size_t>(held.chamber[static_cast<std::size_t>(j)])].pressure_Pa = mu[j];
+    }
+  }
   for (int r = 0; r < n; ++r) x.col(c.free_particles[r]) = rhs.row(r).transpose();
 }
 
@@ -361,7 +434,11 @@ void one_step(const Model& model, State& s, ProjectiveCache& c, double h) {
   // close to the solution's.
   for (int i : c.free_particles) x.col(i) = s.x.col(i) + h * s.v.col(i);
   refresh_volume_hessian(model, c, factor, s.x, s.volume_gradient);
-  for (int k = 0; k < model.iterations; ++k) iterate(model, s, c, factor, setup, c.volume, t_end, x);
+  const HeldChambers held = hold_chambers(model, s, c, factor);
+  for (std::size_t k = 0; k < s.chambers.size(); ++k) {
+    if (!isovolumic(s.chambers[k].phase)) s.chambers[k].pressure_Pa = load_Pa(model.circulation, model.circulation.chambers[k], s.chambers[k]);
+  }
+  for (int k = 0; k < model.iterations; ++k) iterate(model, s, c, factor, setup, c.volume, held, t_end, x);
   resolve_floor_contact(model, x);
   c.x_old = s.x;
   c.v_old = s.v;
@@ -372,6 +449,7 @@ void one_step(const Model& model, State& s, ProjectiveCache& c, double h) {
   s.x_prev = s.x;
   s.x = x;
   s.time_s = t_end;
+  if (model.circulation.enabled()) advance_phases(model.circulation, s.x, h, s.chambers);
 }
 
 }  // namespace

@@ -1,0 +1,83 @@
+#include "sim/circulation.h"
+
+#include "sim/constraints/volume.h"
+
+namespace systole::sim {
+namespace {
+
+Eigen::Matrix3Xd points_at(const Chamber& chamber, const Eigen::Matrix3Xd& x) {
+  Eigen::Matrix3Xd points = chamber.point_offset;
+  for (int p = 0; p < chamber.point_count(); ++p) {
+    for (int t = chamber.point_begin[p]; t < chamber.point_begin[p + 1]; ++t) {
+      points.col(p) += chamber.term_weight[t] * x.col(chamber.term_particle[t]);
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
+double chamber_volume(const Chamber& chamber, const Eigen::Matrix3Xd& x) {
+  return enclosed_volume(points_at(chamber, x), chamber.triangles);
+}
+
+double chamber_volume(const Chamber& chamber, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& gradient) {
+  const Eigen::Matrix3Xd points = points_at(chamber, x);
+  Eigen::Matrix3Xd point_gradient(3, points.cols());
+  const double volume = volume_and_gradient(points, chamber.triangles, point_gradient);
+  gradient.setZero(3, x.cols());
+  for (int p = 0; p < chamber.point_count(); ++p) {
+    for (int t = chamber.point_begin[p]; t < chamber.point_begin[p + 1]; ++t) {
+      gradient.col(chamber.term_particle[t]) += chamber.term_weight[t] * point_gradient.col(p);
+    }
+  }
+  return volume;
+}
+
+void advance_phases(const Circulation& circulation, const Eigen::Matrix3Xd& x, double h,
+                    std::vector<ChamberState>& chambers) {
+  for (std::size_t c = 0; c < chambers.size(); ++c) {
+    const Chamber& chamber = circulation.chambers[c];
+    ChamberState& s = chambers[c];
+    const double volume = chamber_volume(chamber, x);
+    const double flow = (volume - s.volume_m3) / h;  // Into the cavity. unit: m^3/s
+    s.volume_m3 = volume;
+    switch (s.phase) {
+      case ChamberPhase::kFilling:
+        if (-flow > circulation.shutting_rate_per_s * chamber.rest_m3) {
+          s.phase = ChamberPhase::kIsovolumicContraction;
+          s.shut_m3 = volume;
+        }
+        break;
+      case ChamberPhase::kIsovolumicContraction:
+        if (s.pressure_Pa >= chamber.afterload_Pa) s.phase = ChamberPhase::kEjection;
+        break;
+      case ChamberPhase::kEjection:
+        // Blood turning back shuts the outflow valve.
+        if (flow > 0) {
+          s.phase = ChamberPhase::kIsovolumicRelaxation;
+          s.shut_m3 = volume;
+        }
+        break;
+      case ChamberPhase::kIsovolumicRelaxation:
+        if (s.pressure_Pa <= circulation.filling_Pa) s.phase = ChamberPhase::kFilling;
+        break;
+    }
+  }
+}
+
+const char* phase_name(ChamberPhase phase) {
+  switch (phase) {
+    case ChamberPhase::kFilling:
+      return "filling";
+    case ChamberPhase::kIsovolumicContraction:
+      return "isovolumic contraction";
+    case ChamberPhase::kEjection:
+      return "ejection";
+    case ChamberPhase::kIsovolumicRelaxation:
+      return "isovolumic relaxation";
+  }
+  return "?";
+}
+
+}  // namespace systole::sim
