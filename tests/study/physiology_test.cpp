@@ -157,6 +157,25 @@ TEST(Physiology, TheShippedHeartIsNormal) {
   }
 }
 
+// With blood (organs[].blood) the ventricle relaxes with both valves shut until its pressure
+// falls below the atrium's, as in vivo; the valves open and close in Wiggers' order, and
+// the ventricle still ejects a normal fraction through a normal share of the beat.
+TEST(Physiology, WithBloodTheVentricleRelaxesWithBothValvesShut) {
+  const PhysiologyReport r = measure_physiology(scene::load(test::source("scenes/heart-wiggers.yaml")));
+  EXPECT_TRUE(kIsovolumicRelaxation.holds(r.isovolumic_relaxation_ms)) << physiology_text(r);
+  EXPECT_TRUE(kEjectionFraction.holds(r.ejection_fraction_pct)) << r.ejection_fraction_pct << " %";
+  EXPECT_TRUE(kEjectionShare.holds(r.ejection_pct)) << r.ejection_pct << " % of the beat";
+  EXPECT_TRUE(kTwist.holds(r.twist_deg)) << r.twist_deg << " deg";
+  const double mitral_closes = time_of(r, "mitral_valve", false), aortic_opens = time_of(r, "aortic_valve", true);
+  const double aortic_closes = time_of(r, "aortic_valve", false), mitral_opens = time_of(r, "mitral_valve", true);
+  ASSERT_GE(mitral_closes, 0);
+  // Isovolumic contraction: from the mitral closure to the aortic opening, 20-80 ms.
+  EXPECT_GT(aortic_opens - mitral_closes, 20) << physiology_text(r);
+  EXPECT_LT(aortic_opens - mitral_closes, 80) << physiology_text(r);
+  EXPECT_LT(aortic_opens, aortic_closes);
+  EXPECT_LT(aortic_closes, mitral_opens);
+}
+
 const SegmentThickening& segment(const PhysiologyReport& r, int aha) {
   for (const auto& s : r.segments) {
     if (s.segment == aha) return s;
