@@ -90,7 +90,7 @@ World build_world(const scene::Scene& scene) {
     const sim::ModelOptions options = sim::model_options(scene, organ.name, w.dt_s);
     if (organ.blood.enabled && (!choice.myocardium || scene.solver.method != scene::SolverMethod::kProjective)) {
       std::ostringstream m;
-      m << where(organ.origin) << ": organs." << organ.name << ".blood: "
+      m << where(organ.origin) << "organs[" << w.organs.size() << "].blood: "
         << (choice.myocardium ? "the blood is held by the projective solver; set solver.method: projective"
                               : "blood fills the generated anatomical heart's ventricles (mesh: {procedural: "
                                 "anatomical_heart} with body.lattice auto or 0); this organ has none");

@@ -75,11 +75,13 @@ std::string doc_path(const std::string& define_path) {
 /// A message names the key when it gives its full path (or is about the -D that set it), or
 /// its path within the list item whose line it gives ("every.yaml:2:5: organ 'heart': ...
 /// body.volume_stiffness"). One check relates two keys and names the other: an organ moved
-/// or shrunk away from an interaction names the interaction's `at` and `radius`.
+/// or shrunk away from an interaction names the interaction's `at` and `radius`; and blood
+/// in an organ with no ventricles names the `blood` block, whichever of its keys is set.
 bool names_the_key(const std::string& message, const std::string& define, const std::string& key) {
   if (message.starts_with("-D " + define + ": ") || message.find(key) != std::string::npos) return true;
   const auto item_end = key.rfind("].");
   if (item_end != std::string::npos && message.find(key.substr(item_end + 2)) != std::string::npos) return true;
+  if (key.starts_with("organs[0].blood.") && message.find("organs[0].blood: ") != std::string::npos) return true;
   return key.starts_with("organs[0].transform.") && message.find("interactions[0].poke.at") != std::string::npos;
 }
 

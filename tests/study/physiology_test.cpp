@@ -150,8 +150,8 @@ TEST(Physiology, TheShippedHeartIsNormal) {
     EXPECT_TRUE(kTwist.holds(r.twist_deg)) << name << ": " << r.twist_deg << " deg";
     EXPECT_TRUE(kEjectionShare.holds(r.ejection_pct)) << name << ": " << r.ejection_pct << " % of the beat";
     // With no blood the mitral valve opens as the aortic one closes, within a frame (33 ms),
-    // where in vivo the ventricle relaxes 50-100 ms with both shut (docs/anatomy.md, "Not
-    // yet: Blood"). When the blood comes, this turns into the normal range's check.
+    // where in vivo the ventricle relaxes 50-100 ms with both shut: heart-wiggers, with blood,
+    // has it (below; docs/anatomy.md, "Blood").
     EXPECT_LT(r.isovolumic_relaxation_ms, 1000 * r.frame_s + 1) << name;
     EXPECT_EQ(r.outside_normal(), std::vector<std::string>{"isovolumic relaxation"}) << name << ":\n" << physiology_text(r);
   }

@@ -86,7 +86,7 @@ TEST(Blood, IsRefusedWhereNoVentricleHoldsIt) {
     EXPECT_EQ(e.code(), ExitCode::kDataError);
     const std::string what = e.what();
     EXPECT_NE(what.find("scenes/test.yaml:2"), std::string::npos) << what;
-    EXPECT_NE(what.find("organs.kidney.blood"), std::string::npos) << what;
+    EXPECT_NE(what.find("organs[0].blood: "), std::string::npos) << what;
   }
   const std::string xpbd =
       "organs:\n  - name: heart\n    mesh: {procedural: anatomical_heart, detail: 1}\n    blood: {aortic_pressure: 22 mmHg}\n"
