@@ -1,5 +1,7 @@
 #include "sim/circulation.h"
 
+#include <algorithm>
+
 #include "sim/constraints/volume.h"
 
 namespace systole::sim {
@@ -41,20 +43,26 @@ void advance_phases(const Circulation& circulation, const Eigen::Matrix3Xd& x, d
     ChamberState& s = chambers[c];
     const double volume = chamber_volume(chamber, x);
     const double flow = (volume - s.volume_m3) / h;  // Into the cavity. unit: m^3/s
+    s.flow_m3_per_s += std::min(1.0, h / kFlowSmoothing_s) * (flow - s.flow_m3_per_s);
     s.volume_m3 = volume;
     switch (s.phase) {
       case ChamberPhase::kFilling:
-        if (-flow > circulation.shutting_rate_per_s * chamber.rest_m3) {
+        if (-s.flow_m3_per_s > circulation.shutting_rate_per_s * chamber.rest_m3) {
           s.phase = ChamberPhase::kIsovolumicContraction;
           s.shut_m3 = volume;
         }
         break;
       case ChamberPhase::kIsovolumicContraction:
-        if (s.pressure_Pa >= chamber.afterload_Pa) s.phase = ChamberPhase::kEjection;
+        if (s.pressure_Pa >= chamber.afterload_Pa) {
+          s.phase = ChamberPhase::kEjection;
+          s.smallest_m3 = volume;
+        }
         break;
       case ChamberPhase::kEjection:
-        // Blood turning back shuts the outflow valve.
-        if (flow > 0) {
+        // Blood turning back shuts the outflow valve: the volume rising from its least, by
+        // more than a step's vibration.
+        s.smallest_m3 = std::min(s.smallest_m3, volume);
+        if (volume > s.smallest_m3 + kBackflow * chamber.rest_m3) {
           s.phase = ChamberPhase::kIsovolumicRelaxation;
           s.shut_m3 = volume;
         }

@@ -62,9 +62,19 @@ enum class ChamberPhase { kFilling, kIsovolumicContraction, kEjection, kIsovolum
 struct ChamberState {
   ChamberPhase phase = ChamberPhase::kFilling;
   double volume_m3 = 0;     ///< At the last step's end. unit: m^3
+  /// The flow into the cavity, smoothed over kFlowSmoothing_s so a step's vibration does not
+  /// count as a contraction (and the phases do not depend on the step). unit: m^3/s
+  double flow_m3_per_s = 0;
+  double smallest_m3 = 0;   ///< The least volume since the outflow valve opened. unit: m^3
   double shut_m3 = 0;       ///< The volume its blood keeps while both valves are shut. unit: m^3
   double pressure_Pa = 0;   ///< The cavity's pressure at the last step (the multiplier, or the load). unit: Pa
 };
+
+/// The time over which a chamber's flow is smoothed. unit: s
+inline constexpr double kFlowSmoothing_s = 0.01;
+/// How far, per rest volume, an ejecting chamber's volume must rise from its least for the
+/// flow to have turned back: well above a step's vibration, a tenth of a millilitre. unit: 1
+inline constexpr double kBackflow = 1e-3;
 
 /// Whether the phase holds the chamber's volume.
 inline bool isovolumic(ChamberPhase phase) {

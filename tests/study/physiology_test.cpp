@@ -176,6 +176,29 @@ TEST(Physiology, WithBloodTheVentricleRelaxesWithBothValvesShut) {
   EXPECT_LT(aortic_closes, mitral_opens);
 }
 
+// The phases follow the simulated flow and pressure, not the step: at a quarter of the
+// scene's step every valve opens and closes within two of its steps of the same instant,
+// once a beat (a per-step flow once made the pulmonary valve shut 2 ms after opening at
+// 1/960 s, and the right ventricle then never ejected).
+TEST(Physiology, WithBloodTheValveEventsDoNotDependOnTheStep) {
+  scene::Scene coarse = scene::load(test::source("scenes/heart-wiggers.yaml"));
+  scene::Scene fine = coarse;
+  fine.solver.dt_s = coarse.solver.dt_s / 4;
+  const PhysiologyReport a = measure_physiology(coarse), b = measure_physiology(fine);
+  ASSERT_EQ(a.valve_events.size(), b.valve_events.size()) << physiology_text(a) << physiology_text(b);
+  EXPECT_EQ(a.valve_events.size(), 8u) << "each of the four valves opens and shuts once a beat";
+  for (std::size_t i = 0; i < a.valve_events.size(); ++i) {
+    EXPECT_EQ(a.valve_events[i].valve, b.valve_events[i].valve);
+    EXPECT_NEAR(a.valve_events[i].after_activation_ms, b.valve_events[i].after_activation_ms, 2000 * coarse.solver.dt_s)
+        << a.valve_events[i].valve;
+  }
+  for (const PhysiologyReport* r : {&a, &b}) {
+    for (const ChamberVolume& c : r->chambers) {
+      if (c.name == "right_ventricle") EXPECT_GT(c.emptied_pct(), 25) << "the right ventricle ejects";
+    }
+  }
+}
+
 const SegmentThickening& segment(const PhysiologyReport& r, int aha) {
   for (const auto& s : r.segments) {
     if (s.segment == aha) return s;
