@@ -362,8 +362,9 @@ void iterate(const Model& model, State& s, const ProjectiveCache& c, const Facto
   std::vector<double> chamber_m3(chambers);
   std::vector<Eigen::Matrix3Xd> chamber_gradient(chambers);
   for (std::size_t k = 0; k < chambers; ++k) {
-    chamber_m3[k] = chamber_volume(model.circulation.chambers[k], x, chamber_gradient[k]);
     const double load = load_Pa(model.circulation, model.circulation.chambers[k], s.chambers[k]);
+    if (load == 0 && !isovolumic(s.chambers[k].phase)) continue;  // Nothing pushes on it this step.
+    chamber_m3[k] = chamber_volume(model.circulation.chambers[k], x, chamber_gradient[k]);
     if (load == 0) continue;
     for (int r = 0; r < n; ++r) rhs.row(r) += load * chamber_gradient[k].col(c.free_particles[r]).transpose();
   }
