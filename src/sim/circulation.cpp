@@ -1,5 +1,6 @@
 #include "sim/circulation.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 
 #include "sim/constraints/volume.h"
@@ -34,6 +35,26 @@ double chamber_volume(const Chamber& chamber, const Eigen::Matrix3Xd& x, Eigen::
     }
   }
   return volume;
+}
+
+void add_pressure_load(const Chamber& chamber, ChamberPhase phase, const Eigen::Matrix3Xd& x, double pressure_Pa,
+                       Eigen::Matrix3Xd& force) {
+  const Eigen::Matrix3Xd points = points_at(chamber, x);
+  Eigen::Matrix3Xd point_force = Eigen::Matrix3Xd::Zero(3, points.cols());
+  const std::pair<int, int> open = phase == ChamberPhase::kFilling   ? chamber.inflow_cap
+                                   : phase == ChamberPhase::kEjection ? chamber.outflow_cap
+                                                                      : std::pair<int, int>{0, 0};
+  for (int t = 0; t < static_cast<int>(chamber.triangles.size()); ++t) {
+    if (t >= open.first && t < open.second) continue;
+    const Eigen::Vector3i& tri = chamber.triangles[static_cast<std::size_t>(t)];
+    const Eigen::Vector3d third = (pressure_Pa / 6.0) * (points.col(tri[1]) - points.col(tri[0])).cross(points.col(tri[2]) - points.col(tri[0]));
+    for (int k = 0; k < 3; ++k) point_force.col(tri[k]) += third;
+  }
+  for (int p = 0; p < chamber.point_count(); ++p) {
+    for (int t = chamber.point_begin[p]; t < chamber.point_begin[p + 1]; ++t) {
+      force.col(chamber.term_particle[t]) += chamber.term_weight[t] * point_force.col(p);
+    }
+  }
 }
 
 void advance_phases(const Circulation& circulation, const Eigen::Matrix3Xd& x, double h,

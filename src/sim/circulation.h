@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace systole::sim {
@@ -28,6 +29,10 @@ namespace systole::sim {
 struct Chamber {
   std::string name;                        ///< "left_ventricle", ...
   std::vector<Eigen::Vector3i> triangles;  ///< Over the points; closed, outward (volume > 0).
+  /// The caps across the inflow and the outflow annulus: ranges [first, last) of triangles.
+  /// An open valve's cap carries no load: the blood's pressure there acts on the atrium or
+  /// the artery beyond it, not on the ventricle.
+  std::pair<int, int> inflow_cap{0, 0}, outflow_cap{0, 0};
   std::vector<int> point_begin;            ///< Point p's terms: [point_begin[p], point_begin[p+1]).
   std::vector<int> term_particle;
   std::vector<double> term_weight;         ///< unit: 1
@@ -87,6 +92,12 @@ double chamber_volume(const Chamber& chamber, const Eigen::Matrix3Xd& x);
 /// The chamber's volume (returned) and its gradient with respect to every particle into
 /// `gradient` (3 x particles, zero where the chamber has no weight). unit: m^3, m^2
 double chamber_volume(const Chamber& chamber, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& gradient);
+
+/// Adds the forces of `pressure_Pa` on the chamber's surface, all but the cap of the valve its
+/// phase holds open, to `force` (3 x particles): each triangle's area-weighted normal, a
+/// third to each corner, spread to the particles that carry it. unit: N
+void add_pressure_load(const Chamber& chamber, ChamberPhase phase, const Eigen::Matrix3Xd& x, double pressure_Pa,
+                       Eigen::Matrix3Xd& force);
 
 /// Moves every chamber through its phases after a step of h seconds ended at positions x,
 /// with the pressure the step found in each (state.pressure_Pa) - see the diagram above.

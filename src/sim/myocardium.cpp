@@ -10,8 +10,10 @@ namespace {
 
 /// A ventricle's cavity over the body's particles: each lining vertex where the embedding
 /// carries it, a cap across each annulus fanned from the rim's centre (mesh::cavity_volume's
-/// closure), every triangle turned to face out of the blood.
-Chamber chamber_of(const mesh::Cavity& cavity, const Embedding& e, const Eigen::Matrix3Xd& rest) {
+/// closure), every triangle turned to face out of the blood. Each cap belongs to the valve
+/// whose leaflets lie nearest its rim.
+Chamber chamber_of(const mesh::Cavity& cavity, const mesh::Anatomy& anatomy, const std::vector<Eigen::Vector3d>& surface,
+                   const Embedding& e, const Eigen::Matrix3Xd& rest) {
   Chamber chamber;
   chamber.name = cavity.name;
   std::map<int, int> point_of;  // Render vertex -> point.
@@ -28,7 +30,22 @@ Chamber chamber_of(const mesh::Cavity& cavity, const Embedding& e, const Eigen::
     return it->second;
   };
   for (const Eigen::Vector3i& t : cavity.lining) chamber.triangles.emplace_back(point(t[0]), point(t[2]), point(t[1]));
+  auto centroid = [&](const std::vector<int>& vertices) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int v : vertices) c += surface[static_cast<std::size_t>(v)];
+    return Eigen::Vector3d(c / static_cast<double>(vertices.size()));
+  };
   for (const std::vector<int>& rim : cavity.rims) {
+    const mesh::Valve* nearest = nullptr;
+    for (const mesh::Valve& valve : anatomy.valves) {
+      if (valve.chamber != cavity.name || valve.vertices.empty()) continue;
+      if (!nearest || (centroid(valve.vertices) - centroid(rim)).norm() < (centroid(nearest->vertices) - centroid(rim)).norm()) {
+        nearest = &valve;
+      }
+    }
+    const int first = static_cast<int>(chamber.triangles.size());
+    const int last = first + static_cast<int>(rim.size());
+    if (nearest) (nearest->opens_on_filling ? chamber.inflow_cap : chamber.outflow_cap) = {first, last};
     std::map<int, double> centre;
     Eigen::Vector3d offset = Eigen::Vector3d::Zero();
     const double share = 1.0 / static_cast<double>(rim.size());
@@ -57,8 +74,8 @@ Chamber chamber_of(const mesh::Cavity& cavity, const Embedding& e, const Eigen::
 
 /// The ventricles' blood: every cavity a valve opens into, the left one against the aortic
 /// pressure, the right one against the pulmonary.
-Circulation circulation_of(const OrganParams& organ, const mesh::Anatomy& anatomy, const Embedding& e,
-                           const Eigen::Matrix3Xd& rest) {
+Circulation circulation_of(const OrganParams& organ, const mesh::Anatomy& anatomy,
+                           const std::vector<Eigen::Vector3d>& surface, const Embedding& e, const Eigen::Matrix3Xd& rest) {
   Circulation circulation;
   if (!organ.blood.enabled) return circulation;
   circulation.filling_Pa = organ.blood.filling_Pa;
@@ -66,7 +83,7 @@ Circulation circulation_of(const OrganParams& organ, const mesh::Anatomy& anatom
     const bool ventricle = std::any_of(anatomy.valves.begin(), anatomy.valves.end(),
                                        [&](const mesh::Valve& v) { return v.chamber == cavity.name; });
     if (ventricle) {
-      circulation.chambers.push_back(chamber_of(cavity, e, rest));
+      circulation.chambers.push_back(chamber_of(cavity, anatomy, surface, e, rest));
       const bool left = cavity.name == "left_ventricle";
       Chamber& chamber = circulation.chambers.back();
       chamber.afterload_Pa = left ? organ.blood.aortic_Pa : organ.blood.pulmonary_Pa;
@@ -120,7 +137,8 @@ ReducedBody build_myocardium_model(const OrganParams& organ, const mesh::OrganGe
     e.offset.col(v) = geometry.mesh.surface.positions[v] - carried;
   }
   body.model = build_model(organ, std::move(parts), options);
-  body.model.circulation = circulation_of(organ, geometry.mesh.anatomy, e, body.model.rest_positions);
+  body.model.circulation =
+      circulation_of(organ, geometry.mesh.anatomy, geometry.mesh.surface.positions, e, body.model.rest_positions);
   return body;
 }
 

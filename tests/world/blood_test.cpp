@@ -77,6 +77,33 @@ TEST(Blood, AHigherAfterloadOpensTheAorticValveLaterAndEjectsLess) {
   EXPECT_GT(high_es, low_es * 1.05) << "and ejects less against it";
 }
 
+// A pressure pushes each face of the cavity along its normal: over the closed surface the
+// forces are the pressure times the volume's gradient (and sum to nothing); with the inflow
+// valve open its cap carries nothing, so the rest push towards the atrium with the pressure
+// times the annulus' area.
+TEST(Blood, APressureLoadsTheCavityButNotTheOpenValvesCap) {
+  scene::Scene s = scene::load(test::source("scenes/heart-wiggers.yaml"));
+  const World w = build_world(s);
+  const sim::Model& model = w.organs[0].model;
+  const sim::Chamber& lv = model.circulation.chambers[0];
+  ASSERT_LT(lv.inflow_cap.first, lv.inflow_cap.second) << "the mitral annulus' cap";
+  const Eigen::Matrix3Xd& x = model.rest_positions;
+  Eigen::Matrix3Xd gradient;
+  sim::chamber_volume(lv, x, gradient);
+  const double pressure = 1000;
+  Eigen::Matrix3Xd shut = Eigen::Matrix3Xd::Zero(3, x.cols()), filling = shut;
+  sim::add_pressure_load(lv, ChamberPhase::kIsovolumicRelaxation, x, pressure, shut);
+  sim::add_pressure_load(lv, ChamberPhase::kFilling, x, pressure, filling);
+  EXPECT_LT((shut - pressure * gradient).norm(), 1e-9 * (pressure * gradient).norm());
+  EXPECT_LT(shut.rowwise().sum().norm(), 1e-9 * shut.norm()) << "a closed surface's pressure forces cancel";
+  // The cap's area: its fan of triangles from the rim's centre.
+  const int rim = lv.inflow_cap.second - lv.inflow_cap.first;
+  ASSERT_GT(rim, 8);
+  const Eigen::Vector3d net = filling.rowwise().sum();
+  EXPECT_GT(net.norm(), 0.5 * pressure * 1e-4) << "a mitral annulus of over 1 cm^2";
+  EXPECT_LT(net.norm(), pressure * 2e-3) << "and under 20 cm^2";
+}
+
 TEST(Blood, IsRefusedWhereNoVentricleHoldsIt) {
   const std::string kidney = "organs:\n  - name: kidney\n    mesh: {procedural: kidney}\n    blood: {aortic_pressure: 3 kPa}\n";
   try {

@@ -357,16 +357,25 @@ void iterate(const Model& model, State& s, const ProjectiveCache& c, const Facto
   const bool volume = model.volume.enabled;
   Rows rhs = setup.rhs;
   add_projections(model, setup, c, x, rhs);
-  // The chambers at the iterate: their volumes and gradients, the loads on their linings.
+  // The chambers at the iterate: the loads on the filling and ejecting ones; the volumes and
+  // gradients of the held ones.
   const std::size_t chambers = s.chambers.size();
   std::vector<double> chamber_m3(chambers);
   std::vector<Eigen::Matrix3Xd> chamber_gradient(chambers);
+  Eigen::Matrix3Xd load_force;
   for (std::size_t k = 0; k < chambers; ++k) {
-    const double load = load_Pa(model.circulation, model.circulation.chambers[k], s.chambers[k]);
-    if (load == 0 && !isovolumic(s.chambers[k].phase)) continue;  // Nothing pushes on it this step.
-    chamber_m3[k] = chamber_volume(model.circulation.chambers[k], x, chamber_gradient[k]);
+    const Chamber& chamber = model.circulation.chambers[k];
+    if (isovolumic(s.chambers[k].phase)) {
+      chamber_m3[k] = chamber_volume(chamber, x, chamber_gradient[k]);
+      continue;
+    }
+    const double load = load_Pa(model.circulation, chamber, s.chambers[k]);
     if (load == 0) continue;
-    for (int r = 0; r < n; ++r) rhs.row(r) += load * chamber_gradient[k].col(c.free_particles[r]).transpose();
+    if (load_force.cols() == 0) load_force.setZero(3, x.cols());
+    add_pressure_load(chamber, s.chambers[k].phase, x, load, load_force);
+  }
+  if (load_force.cols() > 0) {
+    for (int r = 0; r < n; ++r) rhs.row(r) += load_force.col(c.free_particles[r]).transpose();
   }
   if (volume) {
     // A quasi-Newton step on the volume energy k_V/2 (V - V0(t))^2 with the Hessian
