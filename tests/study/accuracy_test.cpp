@@ -162,7 +162,7 @@ TEST_P(ShippedScene, IsWithinTheAccuracyBudget) {
 
 INSTANTIATE_TEST_SUITE_P(AnatomicalHeart, ShippedScene,
                          ::testing::Values("heart", "heart-slowmo-loop", "heart-infarct", "heart-tachycardia", "heart-afib",
-                                           "heart-compare"),
+                                           "heart-compare", "heart-wiggers"),
                          [](const auto& info) {
                            std::string name = info.param;
                            std::replace(name.begin(), name.end(), '-', '_');
