@@ -95,18 +95,4 @@ void advance_phases(const Circulation& circulation, const Eigen::Matrix3Xd& x, d
   }
 }
 
-const char* phase_name(ChamberPhase phase) {
-  switch (phase) {
-    case ChamberPhase::kFilling:
-      return "filling";
-    case ChamberPhase::kIsovolumicContraction:
-      return "isovolumic contraction";
-    case ChamberPhase::kEjection:
-      return "ejection";
-    case ChamberPhase::kIsovolumicRelaxation:
-      return "isovolumic relaxation";
-  }
-  return "?";
-}
-
 }  // namespace systole::sim

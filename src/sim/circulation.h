@@ -10,7 +10,8 @@
 //
 // While both valves are shut the blood, incompressible, keeps the cavity's volume: a
 // constraint V(x) = V_shut on the body whose multiplier is the cavity's pressure. While it
-// ejects the cavity pushes its lining out with the afterload pressure. Nothing is keyed to
+// ejects the blood pushes the cavity's faces out with the afterload, the artery's pressure,
+// which rises as the artery fills (a volume-elastance afterload). Nothing is keyed to
 // the drive: the phases follow from the simulated volume and pressure. The solver
 // (projective dynamics) enforces the constraint and applies the load; this module says
 // what a chamber is, measures it and moves it through its phases.
@@ -103,8 +104,5 @@ void add_pressure_load(const Chamber& chamber, ChamberPhase phase, const Eigen::
 /// with the pressure the step found in each (state.pressure_Pa) - see the diagram above.
 void advance_phases(const Circulation& circulation, const Eigen::Matrix3Xd& x, double h,
                     std::vector<ChamberState>& chambers);
-
-/// The phase's name, for reports ("isovolumic contraction", ...).
-const char* phase_name(ChamberPhase phase);
 
 }  // namespace systole::sim

@@ -61,6 +61,11 @@ void summarize_model(std::ostringstream& s, const scene::Organ& organ, const wor
   }
   if (pinned > 0) s << ", " << pinned << " pinned (held, not solved; no spring between two of them)";
   s << "\n  body: " << body.body_reason;
+  for (const sim::Chamber& chamber : m.circulation.chambers) {
+    s << "\n  blood: " << chamber.name << ", " << std::round(chamber.rest_m3 * 1e7) / 10 << " ml at rest, held while its valves are shut; "
+      << "its outflow valve opens at " << chamber.afterload_Pa / 1000 << " kPa, rising "
+      << chamber.arterial_elastance_Pa_per_m3 * 1e-6 << " Pa per ml ejected";
+  }
   s << "\n  left out:";
   int left_out = 0;
   if (m.springs.bending_count == 0) s << (left_out++ ? "," : "") << " bending (body.bending is 0)";

@@ -315,11 +315,11 @@ void refresh_volume_hessian(const Model& model, ProjectiveCache& c, const Factor
 }
 
 /// The ventricles' blood for one step (sim/circulation.h): per chamber whose valves are both
-/// shut, g0 = grad V at the step's start (free rows) and z = A^-1 g0, the direction in which
-/// the global step moves the body to hold the chamber's volume.
+/// shut, z = A^-1 g0 with g0 = grad V at the step's start (free rows): the direction in
+/// which the global step moves the body to hold the chamber's volume.
 struct HeldChambers {
   std::vector<int> chamber;
-  std::vector<Rows> g0, z;
+  std::vector<Rows> z;
 };
 
 HeldChambers hold_chambers(const Model& model, const State& s, const ProjectiveCache& c, const Factor& factor) {
@@ -331,11 +331,9 @@ HeldChambers hold_chambers(const Model& model, const State& s, const ProjectiveC
     chamber_volume(model.circulation.chambers[k], s.x, gradient);
     Rows g(n, 3);
     for (int r = 0; r < n; ++r) g.row(r) = gradient.col(c.free_particles[r]).transpose();
-    Rows z = g;
-    solve_in_place<3>(*factor.ldlt, z);
+    solve_in_place<3>(*factor.ldlt, g);
     held.chamber.push_back(static_cast<int>(k));
-    held.g0.push_back(std::move(g));
-    held.z.push_back(std::move(z));
+    held.z.push_back(std::move(g));
   }
   return held;
 }

@@ -25,6 +25,12 @@
 // back-substitution of six columns in all. The damping and the springs' linear part are
 // exact in the matrix, so few iterations suffice: what is iterated is only the springs'
 // rotation and the volume (docs/accuracy.md measures how many).
+//
+// A heart with blood (sim/circulation.h) adds, per ventricle whose valves are both shut, a
+// hard constraint V_i(x) = V_shut,i: each iteration moves the global step's result along
+// z_i = A^-1 g_i (g_i its volume gradient at the step's start) by the multipliers that bring
+// the linearized volumes back, which are the ventricles' pressures; a filling or ejecting
+// ventricle's pressure is a load on its faces in the right-hand side.
 
 #include "sim/model.h"
 #include "sim/state.h"
