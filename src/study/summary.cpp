@@ -1,5 +1,6 @@
 #include "study/summary.h"
 
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
