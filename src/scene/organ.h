@@ -174,6 +174,7 @@ struct Blood {
   double aortic_elastance_Pa_per_m3 = 0;     ///< How the aortic pressure rises with the volume ejected. unit: Pa/m^3
   double pulmonary_elastance_Pa_per_m3 = 0;  ///< The pulmonary pressure's. unit: Pa/m^3
   double filling_pressure_Pa = 0;   ///< The atria's: an inflow valve opens below it. unit: Pa
+  double chordae = 0;               ///< The share of the shut mitral valve's load its chordae carry. unit: 1
 };
 
 struct Organ {

@@ -44,12 +44,21 @@ void add_pressure_load(const Chamber& chamber, ChamberPhase phase, const Eigen::
   const std::pair<int, int> open = phase == ChamberPhase::kFilling   ? chamber.inflow_cap
                                    : phase == ChamberPhase::kEjection ? chamber.outflow_cap
                                                                       : std::pair<int, int>{0, 0};
+  // A shut inflow valve's leaflets hang on the chordae: their share of its load pulls the
+  // papillary muscles' wall towards the base instead of pushing the annulus.
+  const bool chordae = phase != ChamberPhase::kFilling && !chamber.chordae_points.empty();
+  Eigen::Vector3d chordae_force = Eigen::Vector3d::Zero();
   for (int t = 0; t < static_cast<int>(chamber.triangles.size()); ++t) {
     if (t >= open.first && t < open.second) continue;
     const Eigen::Vector3i& tri = chamber.triangles[static_cast<std::size_t>(t)];
-    const Eigen::Vector3d third = (pressure_Pa / 6.0) * (points.col(tri[1]) - points.col(tri[0])).cross(points.col(tri[2]) - points.col(tri[0]));
+    Eigen::Vector3d third = (pressure_Pa / 6.0) * (points.col(tri[1]) - points.col(tri[0])).cross(points.col(tri[2]) - points.col(tri[0]));
+    if (chordae && t >= chamber.inflow_cap.first && t < chamber.inflow_cap.second) {
+      chordae_force += 3 * chamber.chordae_share * third;
+      third *= 1 - chamber.chordae_share;
+    }
     for (int k = 0; k < 3; ++k) point_force.col(tri[k]) += third;
   }
+  for (int p : chamber.chordae_points) point_force.col(p) += chordae_force / static_cast<double>(chamber.chordae_points.size());
   for (int p = 0; p < chamber.point_count(); ++p) {
     for (int t = chamber.point_begin[p]; t < chamber.point_begin[p + 1]; ++t) {
       force.col(chamber.term_particle[t]) += chamber.term_weight[t] * point_force.col(p);

@@ -34,6 +34,10 @@ struct Chamber {
   /// An open valve's cap carries no load: the blood's pressure there acts on the atrium or
   /// the artery beyond it, not on the ventricle.
   std::pair<int, int> inflow_cap{0, 0}, outflow_cap{0, 0};
+  /// Where the chordae tendineae pull: the points of the papillary muscles' wall, and the
+  /// share of the shut inflow valve's load they take from its annulus (0: all on the annulus).
+  std::vector<int> chordae_points;
+  double chordae_share = 0;
   std::vector<int> point_begin;            ///< Point p's terms: [point_begin[p], point_begin[p+1]).
   std::vector<int> term_particle;
   std::vector<double> term_weight;         ///< unit: 1

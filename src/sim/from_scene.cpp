@@ -103,6 +103,7 @@ OrganParams organ_params(const scene::Organ& organ) {
   p.blood.aortic_elastance_Pa_per_m3 = blood.aortic_elastance_Pa_per_m3;
   p.blood.pulmonary_elastance_Pa_per_m3 = blood.pulmonary_elastance_Pa_per_m3;
   p.blood.filling_Pa = blood.filling_pressure_Pa;
+  p.blood.chordae = blood.chordae;
   p.regions = region_params(organ.regions);
   return p;
 }

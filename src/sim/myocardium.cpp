@@ -11,7 +11,9 @@ namespace {
 /// A ventricle's cavity over the body's particles: each lining vertex where the embedding
 /// carries it, a cap across each annulus fanned from the rim's centre (mesh::cavity_volume's
 /// closure), every triangle turned to face out of the blood. Each cap belongs to the valve
-/// whose leaflets lie nearest its rim.
+/// whose leaflets lie nearest its rim. The left ventricle's chordae pull on its lining at the
+/// papillary muscles' bases: the mid-ventricular anterolateral and inferior segments (AHA 12
+/// and 10; the anterolateral and posteromedial muscles).
 Chamber chamber_of(const mesh::Cavity& cavity, const mesh::Anatomy& anatomy, const std::vector<Eigen::Vector3d>& surface,
                    const Embedding& e, const Eigen::Matrix3Xd& rest) {
   Chamber chamber;
@@ -58,6 +60,13 @@ Chamber chamber_of(const mesh::Cavity& cavity, const mesh::Anatomy& anatomy, con
     offsets.push_back(offset);
     for (std::size_t i = 0; i < rim.size(); ++i) chamber.triangles.emplace_back(point(rim[i]), c, point(rim[(i + 1) % rim.size()]));
   }
+  if (cavity.name == "left_ventricle") {
+    const mesh::VentricleLandmarks& lv = anatomy.left_ventricle;
+    for (std::size_t i = 0; i < lv.wall.size(); ++i) {
+      if (lv.wall_segment[i] != 10 && lv.wall_segment[i] != 12) continue;
+      if (auto it = point_of.find(lv.wall[i].first); it != point_of.end()) chamber.chordae_points.push_back(it->second);
+    }
+  }
   chamber.point_offset.resize(3, static_cast<Eigen::Index>(offsets.size()));
   chamber.point_begin.push_back(0);
   for (std::size_t p = 0; p < terms.size(); ++p) {
@@ -89,6 +98,7 @@ Circulation circulation_of(const OrganParams& organ, const mesh::Anatomy& anatom
       chamber.afterload_Pa = left ? organ.blood.aortic_Pa : organ.blood.pulmonary_Pa;
       chamber.arterial_elastance_Pa_per_m3 =
           left ? organ.blood.aortic_elastance_Pa_per_m3 : organ.blood.pulmonary_elastance_Pa_per_m3;
+      if (left) chamber.chordae_share = organ.blood.chordae;
     }
   }
   return circulation;

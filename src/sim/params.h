@@ -97,6 +97,7 @@ struct BloodParams {
   double pulmonary_Pa = 0;  ///< unit: Pa
   double aortic_elastance_Pa_per_m3 = 0;     ///< unit: Pa/m^3
   double pulmonary_elastance_Pa_per_m3 = 0;  ///< unit: Pa/m^3
+  double chordae = 0;                        ///< unit: 1
   double filling_Pa = 0;    ///< unit: Pa
 };
 

@@ -163,6 +163,7 @@ TEST(Physiology, TheShippedHeartIsNormal) {
 TEST(Physiology, WithBloodTheVentricleRelaxesWithBothValvesShut) {
   const PhysiologyReport r = measure_physiology(scene::load(test::source("scenes/heart-wiggers.yaml")));
   EXPECT_TRUE(kIsovolumicRelaxation.holds(r.isovolumic_relaxation_ms)) << physiology_text(r);
+  EXPECT_TRUE(r.outside_normal().empty()) << physiology_text(r);
   EXPECT_TRUE(kEjectionFraction.holds(r.ejection_fraction_pct)) << r.ejection_fraction_pct << " %";
   EXPECT_TRUE(kEjectionShare.holds(r.ejection_pct)) << r.ejection_pct << " % of the beat";
   EXPECT_TRUE(kTwist.holds(r.twist_deg)) << r.twist_deg << " deg";
@@ -174,6 +175,20 @@ TEST(Physiology, WithBloodTheVentricleRelaxesWithBothValvesShut) {
   EXPECT_LT(aortic_opens - mitral_closes, 80) << physiology_text(r);
   EXPECT_LT(aortic_opens, aortic_closes);
   EXPECT_LT(aortic_closes, mitral_opens);
+}
+
+// The shut mitral valve's load on its annulus holds the base up against the long-axis
+// shortening; its chordae carry it to the papillary muscles' wall instead, which the
+// pressure then pulls towards the base (docs/anatomy.md, "Blood").
+TEST(Physiology, TheChordaeLetTheBaseDescend) {
+  scene::Scene with = scene::load(test::source("scenes/heart-wiggers.yaml"));
+  scene::Scene without = with;
+  without.organs[0].blood.chordae = 0;
+  ASSERT_GT(with.organs[0].blood.chordae, 0.5);
+  const PhysiologyReport a = measure_physiology(without), b = measure_physiology(with);
+  EXPECT_GT(b.long_axis_shortening_pct, a.long_axis_shortening_pct + 1.5)
+      << a.long_axis_shortening_pct << " -> " << b.long_axis_shortening_pct << " %";
+  EXPECT_NEAR(b.ejection_fraction_pct, a.ejection_fraction_pct, 3) << "the pressure ejects as much";
 }
 
 // The phases follow the simulated flow and pressure, not the step: at a quarter of the

@@ -85,8 +85,11 @@ TEST(Blood, APressureLoadsTheCavityButNotTheOpenValvesCap) {
   scene::Scene s = scene::load(test::source("scenes/heart-wiggers.yaml"));
   const World w = build_world(s);
   const sim::Model& model = w.organs[0].model;
-  const sim::Chamber& lv = model.circulation.chambers[0];
+  sim::Chamber lv = model.circulation.chambers[0];
   ASSERT_LT(lv.inflow_cap.first, lv.inflow_cap.second) << "the mitral annulus' cap";
+  ASSERT_FALSE(lv.chordae_points.empty()) << "the papillary muscles' wall";
+  const double chordae = lv.chordae_share;
+  lv.chordae_share = 0;  // All of the shut valve's load on its annulus, first.
   const Eigen::Matrix3Xd& x = model.rest_positions;
   Eigen::Matrix3Xd gradient;
   sim::chamber_volume(lv, x, gradient);
@@ -102,6 +105,14 @@ TEST(Blood, APressureLoadsTheCavityButNotTheOpenValvesCap) {
   const Eigen::Vector3d net = filling.rowwise().sum();
   EXPECT_GT(net.norm(), 0.5 * pressure * 1e-4) << "a mitral annulus of over 1 cm^2";
   EXPECT_LT(net.norm(), pressure * 2e-3) << "and under 20 cm^2";
+  // The chordae move part of the shut valve's load to the wall, and create no force: the
+  // closed surface's forces still cancel, and the lining pulls towards the base (the cap's
+  // outward normal) where they hold it.
+  lv.chordae_share = chordae;
+  Eigen::Matrix3Xd held = Eigen::Matrix3Xd::Zero(3, x.cols());
+  sim::add_pressure_load(lv, ChamberPhase::kEjection, x, pressure, held);
+  EXPECT_LT(held.rowwise().sum().norm(), 1e-9 * held.norm());
+  EXPECT_GT((held - shut).norm(), 0.1 * net.norm()) << "the chordae carry a share of the cap's load";
 }
 
 TEST(Blood, IsRefusedWhereNoVentricleHoldsIt) {

@@ -499,6 +499,10 @@ ValueSpec<Blood> blood_spec() {
                 "than it opened at. 0 = a constant afterload."),
           field("pulmonary_elastance", quantity(Dimension::kElastance, closed(0, 1e12)), &Blood::pulmonary_elastance_Pa_per_m3,
                 "The pulmonary artery's, as aortic_elastance for the right ventricle."),
+          field("chordae", number(closed(0, 1)), &Blood::chordae,
+                "The share of the shut mitral valve's load that its chordae tendineae carry to the papillary "
+                "muscles (the left ventricle's anterolateral and inferior mid-wall), pulling the wall towards "
+                "the base; the rest pushes the annulus towards the atrium. 0 = all on the annulus."),
           field("filling_pressure", pressure(), &Blood::filling_pressure_Pa,
                 "The atria's pressure: an inflow valve (mitral, tricuspid) opens when its relaxing "
                 "ventricle's pressure falls below it, and the filling ventricle is pushed out with it."),

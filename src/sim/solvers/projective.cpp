@@ -328,7 +328,10 @@ HeldChambers hold_chambers(const Model& model, const State& s, const ProjectiveC
   Eigen::Matrix3Xd gradient;
   for (std::size_t k = 0; k < s.chambers.size(); ++k) {
     if (!isovolumic(s.chambers[k].phase)) continue;
-    chamber_volume(model.circulation.chambers[k], s.x, gradient);
+    // The blood's push at unit pressure: the volume's gradient, but for the share of the
+    // shut inflow valve's load that its chordae carry to the wall.
+    gradient.setZero(3, s.x.cols());
+    add_pressure_load(model.circulation.chambers[k], s.chambers[k].phase, s.x, 1.0, gradient);
     Rows g(n, 3);
     for (int r = 0; r < n; ++r) g.row(r) = gradient.col(c.free_particles[r]).transpose();
     solve_in_place<3>(*factor.ldlt, g);
