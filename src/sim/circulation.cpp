@@ -77,7 +77,7 @@ void advance_phases(const Circulation& circulation, const Eigen::Matrix3Xd& x, d
     s.volume_m3 = volume;
     switch (s.phase) {
       case ChamberPhase::kFilling:
-        if (-s.flow_m3_per_s > circulation.shutting_rate_per_s * chamber.rest_m3) {
+        if (-s.flow_m3_per_s > kShuttingRate_per_s * chamber.rest_m3) {
           s.phase = ChamberPhase::kIsovolumicContraction;
           s.shut_m3 = volume;
         }

@@ -58,10 +58,6 @@ struct Circulation {
   std::vector<Chamber> chambers;
   /// The pressure an inflow valve opens below (the atrial pressure). unit: Pa
   double filling_Pa = 0;
-  /// The rate of volume loss, per rest volume, at which a filling ventricle's inflow valve
-  /// shuts: above the atria's slow squeeze of the ventricle, below the ventricle's own
-  /// contraction's. unit: 1/s
-  double shutting_rate_per_s = 1.0;
 
   bool enabled() const { return !chambers.empty(); }
 };
@@ -80,6 +76,10 @@ struct ChamberState {
   double pressure_Pa = 0;   ///< The cavity's pressure at the last step (the multiplier, or the load). unit: Pa
 };
 
+/// The rate of volume loss, per rest volume, at which a filling ventricle's inflow valve
+/// shuts: above the atria's slow squeeze of the ventricle, below the ventricle's own
+/// contraction's. unit: 1/s
+inline constexpr double kShuttingRate_per_s = 1.0;
 /// The time over which a chamber's flow is smoothed. unit: s
 inline constexpr double kFlowSmoothing_s = 0.01;
 /// How far, per rest volume, an ejecting chamber's volume must rise from its least for the

@@ -89,7 +89,6 @@ struct BodyParams {
   double fibre_tension = 0;          ///< Muscle with fibres: the fibres' tension beside the active strain. unit: 1
 };
 
-/// One organ as the simulator sees it.
 /// The blood of an anatomical heart's ventricles (sim/circulation.h).
 struct BloodParams {
   bool enabled = false;
@@ -101,6 +100,7 @@ struct BloodParams {
   double filling_Pa = 0;    ///< unit: Pa
 };
 
+/// One organ as the simulator sees it.
 struct OrganParams {
   std::string name;
   std::string where;  ///< "file:line:column: " of the organ in its scene, for messages; may be empty.

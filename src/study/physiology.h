@@ -76,8 +76,8 @@ struct PhysiologyReport {
   double muscle_volume_change_pct = 0;  ///< Largest change of the myocardium's volume over the beat.
   std::vector<ValveEvent> valve_events;
   double ejection_pct = 0;           ///< Share of the beat the aortic valve is open. unit: %
-  /// The aortic valve's closure to the mitral valve's next opening, to the frame (NaN when
-  /// either is missing). unit: ms
+  /// The aortic valve's closure to the mitral valve's next opening, to the frame (with
+  /// blood, to the solver's step; NaN when either is missing). unit: ms
   double isovolumic_relaxation_ms = std::numeric_limits<double>::quiet_NaN();
   /// Names of the figures outside their normal range (empty: a normal heart).
   std::vector<std::string> outside_normal() const;

@@ -16,6 +16,11 @@ ValueSpec<std::vector<PathKey>> path_keys(std::string position_doc);
 ValueSpec<ClipPlane> clip_spec();
 ValueSpec<Organ> organ_spec();
 
+// body.cpp
+ValueSpec<Body> body_spec();
+/// The blood in an anatomical heart's ventricles.
+ValueSpec<Blood> blood_spec();
+
 // world.cpp
 ValueSpec<Solver> solver_spec();
 ValueSpec<Interaction> interaction_spec();

@@ -370,7 +370,7 @@ void iterate(const Model& model, State& s, const ProjectiveCache& c, const Facto
       chamber_m3[k] = chamber_volume(chamber, x, chamber_gradient[k]);
       continue;
     }
-    const double load = load_Pa(model.circulation, chamber, s.chambers[k]);
+    const double load = s.chambers[k].pressure_Pa;  // The step's load (one_step).
     if (load == 0) continue;
     if (load_force.cols() == 0) load_force.setZero(3, x.cols());
     add_pressure_load(chamber, s.chambers[k].phase, x, load, load_force);
