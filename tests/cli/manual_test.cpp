@@ -134,7 +134,10 @@ TEST(Manual, ManPageShowsRenderOptionsWithTheirValues) {
 
 /// What the bash completion offers for `words` (the last one being completed) in `folder`.
 std::set<std::string> bash_complete(const std::vector<std::string>& words, const fs::path& folder) {
-  const auto dir = scratch("bash_complete_driver");
+  // A driver folder per test: ctest runs the completion tests at once, and one's scratch()
+  // would empty the folder the other is writing to.
+  const auto dir = scratch(std::string("bash_complete_driver_") +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
   const auto driver = dir / "complete.sh";
   write_file(driver,
              "source \"$1\" || exit 2\ncd \"$2\" || exit 2\nshift 2\n"
