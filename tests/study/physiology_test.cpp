@@ -135,12 +135,12 @@ TEST(Physiology, AFibreTensionTwistsTheVentricle) {
 }
 
 // The shipped anatomical heart is a normal heart: every figure a cardiologist measures is
-// within its normal range (src/study/physiology.h cites each range's source) but the
-// isovolumic relaxation. The ejection time is in range because the ventricles' drive shortens
-// them as slowly as myocardial strain does (peak_fraction); the isovolumic phases need the
-// blood.
+// within its normal range (src/study/physiology.h cites each range's source). The ejection
+// time is in range because the ventricles' drive shortens them as slowly as myocardial
+// strain does (peak_fraction); the isovolumic phases because blood (organs[].blood) holds a
+// ventricle's volume while both its valves are shut.
 TEST(Physiology, TheShippedHeartIsNormal) {
-  for (const char* name : {"heart", "heart-cutaway"}) {
+  for (const char* name : {"heart", "heart-cutaway", "heart-wiggers"}) {
     const PhysiologyReport r = measure_physiology(scene::load(test::source(std::string("scenes/") + name + ".yaml")));
     EXPECT_TRUE(kEndDiastolicVolume.holds(r.end_diastolic_ml)) << name << ": " << r.end_diastolic_ml << " ml";
     EXPECT_TRUE(kEndSystolicVolume.holds(r.end_systolic_ml)) << name << ": " << r.end_systolic_ml << " ml";
@@ -149,24 +149,16 @@ TEST(Physiology, TheShippedHeartIsNormal) {
     EXPECT_TRUE(kWallThickening.holds(r.wall_thickening_pct)) << name << ": " << r.wall_thickening_pct << " %";
     EXPECT_TRUE(kTwist.holds(r.twist_deg)) << name << ": " << r.twist_deg << " deg";
     EXPECT_TRUE(kEjectionShare.holds(r.ejection_pct)) << name << ": " << r.ejection_pct << " % of the beat";
-    // With no blood the mitral valve opens as the aortic one closes, within a frame (33 ms),
-    // where in vivo the ventricle relaxes 50-100 ms with both shut: heart-wiggers, with blood,
-    // has it (below; docs/anatomy.md, "Blood").
-    EXPECT_LT(r.isovolumic_relaxation_ms, 1000 * r.frame_s + 1) << name;
-    EXPECT_EQ(r.outside_normal(), std::vector<std::string>{"isovolumic relaxation"}) << name << ":\n" << physiology_text(r);
+    EXPECT_TRUE(kIsovolumicRelaxation.holds(r.isovolumic_relaxation_ms)) << name << ": " << r.isovolumic_relaxation_ms << " ms";
+    EXPECT_TRUE(r.outside_normal().empty()) << name << ":\n" << physiology_text(r);
   }
 }
 
-// With blood (organs[].blood) the ventricle relaxes with both valves shut until its pressure
-// falls below the atrium's, as in vivo; the valves open and close in Wiggers' order, and
-// the ventricle still ejects a normal fraction through a normal share of the beat.
+// With blood the ventricle relaxes with both valves shut until its pressure falls below the
+// atrium's, as in vivo; the valves open and close in Wiggers' order, the isovolumic
+// contraction between the mitral valve's closing and the aortic valve's opening.
 TEST(Physiology, WithBloodTheVentricleRelaxesWithBothValvesShut) {
-  const PhysiologyReport r = measure_physiology(scene::load(test::source("scenes/heart-wiggers.yaml")));
-  EXPECT_TRUE(kIsovolumicRelaxation.holds(r.isovolumic_relaxation_ms)) << physiology_text(r);
-  EXPECT_TRUE(r.outside_normal().empty()) << physiology_text(r);
-  EXPECT_TRUE(kEjectionFraction.holds(r.ejection_fraction_pct)) << r.ejection_fraction_pct << " %";
-  EXPECT_TRUE(kEjectionShare.holds(r.ejection_pct)) << r.ejection_pct << " % of the beat";
-  EXPECT_TRUE(kTwist.holds(r.twist_deg)) << r.twist_deg << " deg";
+  const PhysiologyReport r = measure_physiology(scene::load(test::source("scenes/heart.yaml")));
   const double mitral_closes = time_of(r, "mitral_valve", false), aortic_opens = time_of(r, "aortic_valve", true);
   const double aortic_closes = time_of(r, "aortic_valve", false), mitral_opens = time_of(r, "mitral_valve", true);
   ASSERT_GE(mitral_closes, 0);
@@ -175,13 +167,19 @@ TEST(Physiology, WithBloodTheVentricleRelaxesWithBothValvesShut) {
   EXPECT_LT(aortic_opens - mitral_closes, 80) << physiology_text(r);
   EXPECT_LT(aortic_opens, aortic_closes);
   EXPECT_LT(aortic_closes, mitral_opens);
+  // Without blood the mitral valve opens as the aortic one closes, within a frame.
+  scene::Scene bloodless = scene::load(test::source("scenes/heart.yaml"));
+  bloodless.organs[0].blood = {};
+  const PhysiologyReport without = measure_physiology(bloodless);
+  EXPECT_LT(without.isovolumic_relaxation_ms, 1000 * without.frame_s + 1) << physiology_text(without);
+  EXPECT_GT(r.isovolumic_relaxation_ms, without.isovolumic_relaxation_ms + 30);
 }
 
 // The shut mitral valve's load on its annulus holds the base up against the long-axis
 // shortening; its chordae carry it to the papillary muscles' wall instead, which the
 // pressure then pulls towards the base (docs/anatomy.md, "Blood").
 TEST(Physiology, TheChordaeLetTheBaseDescend) {
-  scene::Scene with = scene::load(test::source("scenes/heart-wiggers.yaml"));
+  scene::Scene with = scene::load(test::source("scenes/heart.yaml"));
   scene::Scene without = with;
   without.organs[0].blood.chordae = 0;
   ASSERT_GT(with.organs[0].blood.chordae, 0.5);
@@ -196,7 +194,7 @@ TEST(Physiology, TheChordaeLetTheBaseDescend) {
 // once a beat (a per-step flow once made the pulmonary valve shut 2 ms after opening at
 // 1/960 s, and the right ventricle then never ejected).
 TEST(Physiology, WithBloodTheValveEventsDoNotDependOnTheStep) {
-  scene::Scene coarse = scene::load(test::source("scenes/heart-wiggers.yaml"));
+  scene::Scene coarse = scene::load(test::source("scenes/heart.yaml"));
   scene::Scene fine = coarse;
   fine.solver.dt_s = coarse.solver.dt_s / 4;
   const PhysiologyReport a = measure_physiology(coarse), b = measure_physiology(fine);
@@ -249,13 +247,16 @@ scene::Scene with_anterolateral_infarct(scene::Scene s) {
 TEST(Physiology, TheShippedInfarctDoesNotThickenAndTheVentricleEjectsLess) {
   // scenes/heart-infarct.yaml is heart.yaml with a scar through the anterior wall (segment
   // 7): that segment is akinetic (Lang 2015: absent or negligible thickening), the remote
-  // inferior wall thickens as before, and the ejection fraction falls.
+  // inferior wall still thickens normally, and the ejection fraction falls. (With blood the
+  // scar bulges as the pressure rises, so the remote wall thickens a few points less than
+  // the normal heart's, 43 -> 38 %, but well within the normal range.)
   const PhysiologyReport normal = measure_physiology(scene::load(test::source("scenes/heart.yaml")));
   const PhysiologyReport infarct = measure_physiology(scene::load(test::source("scenes/heart-infarct.yaml")));
   EXPECT_TRUE(segment(infarct, 7).akinetic()) << segment(infarct, 7).thickening_pct << " %";
   for (int remote : {9, 10, 11}) {
     EXPECT_FALSE(segment(infarct, remote).akinetic()) << remote;
-    EXPECT_NEAR(segment(infarct, remote).thickening_pct, segment(normal, remote).thickening_pct, 5) << remote;
+    EXPECT_TRUE(kWallThickening.holds(segment(infarct, remote).thickening_pct))
+        << remote << ": " << segment(infarct, remote).thickening_pct << " %";
   }
   EXPECT_LT(infarct.ejection_fraction_pct, normal.ejection_fraction_pct - 4);
   EXPECT_GT(infarct.end_systolic_ml, normal.end_systolic_ml + 4);
