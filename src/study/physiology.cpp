@@ -157,44 +157,6 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   for (std::size_t c = 0; c < anatomy.cavities.size(); ++c) {
     if (anatomy.cavities[c].name == "left_ventricle") lv_cavity = static_cast<int>(c);
   }
-  int ed = beat.front(), es = beat.front();
-  for (int i : beat) {
-    if (volumes[i][lv_cavity] > volumes[ed][lv_cavity]) ed = i;
-    if (volumes[i][lv_cavity] < volumes[es][lv_cavity]) es = i;
-  }
-  report.end_diastolic_ml = volumes[ed][lv_cavity];
-  report.end_systolic_ml = volumes[es][lv_cavity];
-  report.ejection_fraction_pct = 100 * (report.end_diastolic_ml - report.end_systolic_ml) / report.end_diastolic_ml;
-  report.end_systole_ms = 1000 * (times[es] - start);
-
-  auto long_axis = [&](const Eigen::Matrix3Xd& s) { return (s.col(lv.apex) - centroid(lv.annulus, s)).norm(); };
-  auto thickness = [&](const Eigen::Matrix3Xd& s) {
-    double sum = 0;
-    for (const auto& [inner, outer] : lv.wall) sum += (s.col(outer) - s.col(inner)).norm();
-    return sum / static_cast<double>(lv.wall.size());
-  };
-  report.long_axis_shortening_pct = 100 * (1 - long_axis(shapes[es]) / long_axis(shapes[ed]));
-  report.wall_thickening_pct = 100 * (thickness(shapes[es]) / thickness(shapes[ed]) - 1);
-  report.segments = segment_thickening(lv, shapes[ed], shapes[es]);
-  // Twist: apical minus basal rotation at its peak over the beat, from the ventricles'
-  // activation, as speckle tracking times it from the ECG's R wave (Notomi et al. 2005); the
-  // largest volume's frame can fall a frame or two either side of it.
-  const double to_deg = 180 / std::numbers::pi;
-  report.twist_deg = -HUGE_VAL;
-  const Eigen::Matrix3Xd& activation = shapes[beat.front()];
-  const double muscle0 = muscle_volume(anatomy.muscle, shapes[ed]);
-  for (int i : beat) {
-    const Eigen::Vector3d axis = (shapes[i].col(lv.apex) - centroid(lv.annulus, shapes[i])).normalized();
-    const double apical = to_deg * ring_rotation(lv.apical_ring, activation, shapes[i], axis);
-    const double basal = to_deg * ring_rotation(lv.basal_ring, activation, shapes[i], axis);
-    if (apical - basal > report.twist_deg) {
-      report.twist_deg = apical - basal;
-      report.apical_rotation_deg = apical;
-      report.basal_rotation_deg = basal;
-    }
-    report.muscle_volume_change_pct =
-        std::max(report.muscle_volume_change_pct, 100 * std::abs(muscle_volume(anatomy.muscle, shapes[i]) / muscle0 - 1));
-  }
   // Valve events: where the opening leaves or returns to 0, between frames (or, with blood,
   // between steps), within the beat.
   const bool by_step = !step_times.empty();
@@ -233,6 +195,55 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   };
   const double aortic_closes = event("aortic_valve", false, 0);
   if (!std::isnan(aortic_closes)) report.isovolumic_relaxation_ms = event("mitral_valve", true, aortic_closes) - aortic_closes;
+  int ed = beat.front(), es = beat.front();
+  for (int i : beat) {
+    if (volumes[i][lv_cavity] > volumes[ed][lv_cavity]) ed = i;
+    if (volumes[i][lv_cavity] < volumes[es][lv_cavity]) es = i;
+  }
+  // End-systole is the first frame after the aortic valve's closure or, where the valves are
+  // not timed, the smallest volume's (Lang et al. 2015, "Chamber quantification"). With blood
+  // the volume stays at its least through the isovolumic relaxation, so its smallest frame
+  // could be any of them, the muscle already relaxing in the later ones.
+  if (by_step && !std::isnan(aortic_closes)) {
+    for (int i : beat) {
+      if (1000 * (times[i] - start) < aortic_closes) continue;
+      es = i;
+      break;
+    }
+  }
+  report.end_diastolic_ml = volumes[ed][lv_cavity];
+  report.end_systolic_ml = volumes[es][lv_cavity];
+  report.ejection_fraction_pct = 100 * (report.end_diastolic_ml - report.end_systolic_ml) / report.end_diastolic_ml;
+  report.end_systole_ms = 1000 * (times[es] - start);
+
+  auto long_axis = [&](const Eigen::Matrix3Xd& s) { return (s.col(lv.apex) - centroid(lv.annulus, s)).norm(); };
+  auto thickness = [&](const Eigen::Matrix3Xd& s) {
+    double sum = 0;
+    for (const auto& [inner, outer] : lv.wall) sum += (s.col(outer) - s.col(inner)).norm();
+    return sum / static_cast<double>(lv.wall.size());
+  };
+  report.long_axis_shortening_pct = 100 * (1 - long_axis(shapes[es]) / long_axis(shapes[ed]));
+  report.wall_thickening_pct = 100 * (thickness(shapes[es]) / thickness(shapes[ed]) - 1);
+  report.segments = segment_thickening(lv, shapes[ed], shapes[es]);
+  // Twist: apical minus basal rotation at its peak over the beat, from the ventricles'
+  // activation, as speckle tracking times it from the ECG's R wave (Notomi et al. 2005); the
+  // largest volume's frame can fall a frame or two either side of it.
+  const double to_deg = 180 / std::numbers::pi;
+  report.twist_deg = -HUGE_VAL;
+  const Eigen::Matrix3Xd& activation = shapes[beat.front()];
+  const double muscle0 = muscle_volume(anatomy.muscle, shapes[ed]);
+  for (int i : beat) {
+    const Eigen::Vector3d axis = (shapes[i].col(lv.apex) - centroid(lv.annulus, shapes[i])).normalized();
+    const double apical = to_deg * ring_rotation(lv.apical_ring, activation, shapes[i], axis);
+    const double basal = to_deg * ring_rotation(lv.basal_ring, activation, shapes[i], axis);
+    if (apical - basal > report.twist_deg) {
+      report.twist_deg = apical - basal;
+      report.apical_rotation_deg = apical;
+      report.basal_rotation_deg = basal;
+    }
+    report.muscle_volume_change_pct =
+        std::max(report.muscle_volume_change_pct, 100 * std::abs(muscle_volume(anatomy.muscle, shapes[i]) / muscle0 - 1));
+  }
   return report;
 }
 

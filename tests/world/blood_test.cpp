@@ -21,7 +21,7 @@ namespace {
 using sim::ChamberPhase;
 
 TEST(Blood, TheVentricleKeepsItsVolumeWhileBothValvesAreShut) {
-  scene::Scene s = scene::load(test::source("scenes/heart-wiggers.yaml"));
+  scene::Scene s = scene::load(test::source("scenes/heart.yaml"));
   s.output.duration_s = 2;
   World w = build_world(s);
   ASSERT_EQ(w.organs[0].model.circulation.chambers.size(), 2u);
@@ -45,7 +45,8 @@ TEST(Blood, TheVentricleKeepsItsVolumeWhileBothValvesAreShut) {
   EXPECT_GE(phases_seen, 4) << "filling -> isovolumic contraction -> ejection -> isovolumic relaxation -> filling";
   EXPECT_GT(held_steps, 10);
   // Held to a fraction of a percent while the ventricle tightens from rest to the aortic
-  // pressure and relaxes back (2 iterations of a linearized constraint a step).
+  // pressure and relaxes back (the shipped scenes' one iteration of a linearized constraint a
+  // step).
   EXPECT_LT(worst_drift, 0.005) << "of the held volume";
   // The aortic valve opened at the aortic pressure, and the ventricle then emptied.
   EXPECT_GE(peak_pressure, chamber.afterload_Pa);
@@ -53,7 +54,7 @@ TEST(Blood, TheVentricleKeepsItsVolumeWhileBothValvesAreShut) {
 }
 
 TEST(Blood, AHigherAfterloadOpensTheAorticValveLaterAndEjectsLess) {
-  scene::Scene low = scene::load(test::source("scenes/heart-wiggers.yaml"));
+  scene::Scene low = scene::load(test::source("scenes/heart.yaml"));
   low.output.duration_s = 2;
   scene::Scene high = low;
   high.organs[0].blood.aortic_pressure_Pa *= 2;
@@ -82,7 +83,7 @@ TEST(Blood, AHigherAfterloadOpensTheAorticValveLaterAndEjectsLess) {
 // valve open its cap carries nothing, so the rest push towards the atrium with the pressure
 // times the annulus' area.
 TEST(Blood, APressureLoadsTheCavityButNotTheOpenValvesCap) {
-  scene::Scene s = scene::load(test::source("scenes/heart-wiggers.yaml"));
+  scene::Scene s = scene::load(test::source("scenes/heart.yaml"));
   const World w = build_world(s);
   const sim::Model& model = w.organs[0].model;
   sim::Chamber lv = model.circulation.chambers[0];
