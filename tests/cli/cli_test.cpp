@@ -21,7 +21,7 @@ TEST(Cli, ValidatePrintsTheModel) {
   const auto r = run(systole() + " validate " + kHeart);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* fact : {"vertices", "triangles", "region left_ventricle", "region aorta", "pinned", "springs",
-                           "volume constraint", "dt 5.56", "300 frames"}) {
+                           "volume constraint", "dt 5.55", "300 frames"}) {
     EXPECT_NE(r.output.find(fact), std::string::npos) << "missing '" << fact << "' in:\n" << r.output;
   }
 }
