@@ -68,7 +68,9 @@ struct PhysiologyReport {
   double frame_s = 0;                ///< Sampling (the scene's frames). unit: s
   std::vector<ChamberVolume> chambers;
   double end_diastolic_ml = 0, end_systolic_ml = 0, ejection_fraction_pct = 0;  ///< Left ventricle.
-  double end_systole_ms = 0;         ///< After activation: the frame after the aortic valve closes (with blood), else the left ventricle's smallest. unit: ms
+  /// After activation: the first frame after the aortic valve closes where blood times the
+  /// valves, else the left ventricle's smallest. unit: ms
+  double end_systole_ms = 0;
   double long_axis_shortening_pct = 0;
   double wall_thickening_pct = 0;
   std::vector<SegmentThickening> segments;  ///< Mid-ventricular, AHA order 7-12.
