@@ -46,20 +46,45 @@ SoundProbe::SoundProbe(const scene::Scene& scene, world::World& world) {
     for (std::size_t r = 0; r < organ.regions.size(); ++r)
       if (std::find(a.heart.regions.begin(), a.heart.regions.end(), organ.regions[r].name) != a.heart.regions.end())
         regions.push_back(static_cast<int>(r));
-    ventricles_ = world::RegionSize(world.organs[static_cast<std::size_t>(heart_organ_)].model, regions);
+    const sim::Model& model = world.organs[static_cast<std::size_t>(heart_organ_)].model;
+    ventricles_ = world::RegionSize(model, regions);
+    for (std::size_t c = 0; c < model.circulation.chambers.size(); ++c) {
+      if (model.circulation.chambers[c].name == "left_ventricle") left_ventricle_ = static_cast<int>(c);
+    }
   }
   if (a.breath.enabled) breath_organ_ = organ_index(scene, a.breath.organ);
   world.after_step = [this](int organ, const world::OrganBody& body) {
-    if (organ == heart_organ_) size_.push_back({body.state.time_s, ventricles_.measure(body.state.x)});
+    if (organ == heart_organ_) {
+      if (left_ventricle_ >= 0) record_valve_closure(body);
+      size_.push_back({body.state.time_s, ventricles_.measure(body.state.x)});
+    }
     if (organ == breath_organ_ && body.model.volume.enabled)
       volume_.push_back({body.state.time_s, sim::enclosed_volume(body.state.x, body.model.volume.triangles)});
   };
+}
+
+void SoundProbe::record_valve_closure(const world::OrganBody& body) {
+  const sim::ChamberPhase phase = body.state.chambers[static_cast<std::size_t>(left_ventricle_)].phase;
+  if (phase == left_phase_) return;
+  left_phase_ = phase;
+  // The phase changed during the step that just ended: its middle, as validate --physiology
+  // times the valves.
+  const double t = body.state.time_s, at = size_.empty() ? t : 0.5 * (size_.back().time_s + t);
+  if (phase == sim::ChamberPhase::kIsovolumicContraction) valve_closures_.push_back({world::CycleEventKind::kSystoleStart, at});
+  if (phase == sim::ChamberPhase::kIsovolumicRelaxation) valve_closures_.push_back({world::CycleEventKind::kSystoleEnd, at});
 }
 
 SoundSources SoundProbe::finish() const {
   SoundSources s;
   s.ventricle_size = size_;
   s.events = world::detect_cycle_events(size_);
+  if (left_ventricle_ >= 0) {
+    // With blood S1 and S2 are the valves' closures; S3 stays the peak of early refilling.
+    std::erase_if(s.events, [](const world::CycleEvent& e) { return e.kind != world::CycleEventKind::kPeakRefill; });
+    s.events.insert(s.events.end(), valve_closures_.begin(), valve_closures_.end());
+    std::sort(s.events.begin(), s.events.end(),
+              [](const world::CycleEvent& a, const world::CycleEvent& b) { return a.time_s < b.time_s; });
+  }
   s.breath_volume = volume_;
   return s;
 }
@@ -90,19 +115,19 @@ audio::MixRequest mix_request(const scene::Scene& scene, const SoundSources& src
     const scene::HeartAudio& h = a.heart;
     for (const world::CycleEvent& e : src.events) {
       if (!in_clip(e.time_s)) continue;
-      const scene::HeartTone& tone = e.kind == world::CycleEventKind::kShrinkOnset   ? h.s1
-                                     : e.kind == world::CycleEventKind::kRefillOnset ? h.s2
+      const scene::HeartTone& tone = e.kind == world::CycleEventKind::kSystoleStart   ? h.s1
+                                     : e.kind == world::CycleEventKind::kSystoleEnd ? h.s2
                                                                                      : h.s3;
       if (!tone.enabled) continue;
-      const audio::SoundKind kind = e.kind == world::CycleEventKind::kShrinkOnset   ? audio::SoundKind::kS1
-                                    : e.kind == world::CycleEventKind::kRefillOnset ? audio::SoundKind::kS2
+      const audio::SoundKind kind = e.kind == world::CycleEventKind::kSystoleStart   ? audio::SoundKind::kS1
+                                    : e.kind == world::CycleEventKind::kSystoleEnd ? audio::SoundKind::kS2
                                                                                     : audio::SoundKind::kS3;
       r.events.push_back({kind, clock.video_s(e.time_s), site_weight(h.stethoscope, kind) * audio::gain_of_db(tone.level_db)});
     }
     if (h.murmur.enabled) {
       const bool systolic = h.murmur.phase == scene::MurmurPhase::kSystolic;
-      const auto opens = systolic ? world::CycleEventKind::kShrinkOnset : world::CycleEventKind::kRefillOnset;
-      const auto closes = systolic ? world::CycleEventKind::kRefillOnset : world::CycleEventKind::kShrinkOnset;
+      const auto opens = systolic ? world::CycleEventKind::kSystoleStart : world::CycleEventKind::kSystoleEnd;
+      const auto closes = systolic ? world::CycleEventKind::kSystoleEnd : world::CycleEventKind::kSystoleStart;
       r.murmur.shape = murmur_shape(h.murmur.shape);
       r.murmur.pitch_hz = h.murmur.pitch_hz;
       r.murmur.gain = audio::gain_of_db(h.murmur.level_db);

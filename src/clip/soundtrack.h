@@ -18,7 +18,7 @@ namespace systole::clip {
 /// What the soundtrack reads from one run of the simulation, in organ time.
 struct SoundSources {
   std::vector<world::Sample> ventricle_size;  ///< audio.heart's regions, every step. unit: m
-  std::vector<world::CycleEvent> events;      ///< Their turning points (S1, S2, S3 instants).
+  std::vector<world::CycleEvent> events;      ///< S1, S2, S3 instants: the size's turning points, or with blood the valves'.
   std::vector<world::Sample> breath_volume;   ///< audio.breath's organ, every step. unit: m^3
 };
 
@@ -31,9 +31,16 @@ class SoundProbe {
   SoundSources finish() const;
 
  private:
+  void record_valve_closure(const world::OrganBody& body);
+
   int heart_organ_ = -1, breath_organ_ = -1;
   world::RegionSize ventricles_;
   std::vector<world::Sample> size_, volume_;
+  /// With blood: the left ventricle's chamber, its phase after the last step, and the
+  /// closures of its valves (S1 the mitral, S2 the aortic).
+  int left_ventricle_ = -1;
+  sim::ChamberPhase left_phase_ = sim::ChamberPhase::kFilling;
+  std::vector<world::CycleEvent> valve_closures_;
 };
 
 /// How organ time maps to the video: frame k of the clip shows organ time

@@ -75,12 +75,12 @@ std::vector<CycleEvent> detect_cycle_events(const std::vector<Sample>& size, dou
     const double e_now = size[extreme].value;
     if (direction > 0 && e_now - v > threshold) {
       // A maximum: the chamber started to shrink at `extreme`.
-      events.push_back({CycleEventKind::kShrinkOnset, parabolic_peak_s(size, extreme)});
+      events.push_back({CycleEventKind::kSystoleStart, parabolic_peak_s(size, extreme)});
       if (have_refill) add_peak_refill(last_refill, extreme);
       direction = -1;
       extreme = i;
     } else if (direction < 0 && v - e_now > threshold) {
-      events.push_back({CycleEventKind::kRefillOnset, parabolic_peak_s(size, extreme)});
+      events.push_back({CycleEventKind::kSystoleEnd, parabolic_peak_s(size, extreme)});
       last_refill = extreme;
       have_refill = true;
       direction = 1;

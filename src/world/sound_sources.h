@@ -4,7 +4,9 @@
 //  - the ventricles' size, whose turning points time the heart sounds: S1 when they start
 //    to shrink (the atrioventricular valves close as ventricular pressure rises), S2 when
 //    they start to refill (the semilunar valves have closed), S3 at the peak of early
-//    refilling;
+//    refilling. A heart with blood (sim/circulation.h) times S1 and S2 by its left
+//    ventricle's valves instead (clip/soundtrack.cpp): with both valves shut between them,
+//    the size turns before the mitral valve closes and after the aortic one does;
 //  - an organ's enclosed volume, whose rate of change is the breath's air flow.
 // The ventricles' size is a proxy that needs no closed cavity, so it works on any heart (the
 // solid procedural heart, the anatomical heart's myocardium, a mesh file): the mean distance
@@ -41,13 +43,13 @@ class RegionSize {
 };
 
 enum class CycleEventKind {
-  kShrinkOnset,  ///< The ventricles start to shrink: S1.
-  kRefillOnset,  ///< They start to refill: S2.
+  kSystoleStart,  ///< The ventricles start to contract, the atrioventricular valves close: S1.
+  kSystoleEnd,    ///< Their ejection ends, the semilunar valves close: S2.
   kPeakRefill,   ///< Early refilling is fastest: S3.
 };
 
 struct CycleEvent {
-  CycleEventKind kind = CycleEventKind::kShrinkOnset;
+  CycleEventKind kind = CycleEventKind::kSystoleStart;
   double time_s = 0;  ///< Organ time, between steps by parabolic interpolation. unit: s
 };
 

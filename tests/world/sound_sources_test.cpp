@@ -27,12 +27,12 @@ TEST(CycleEvents, TurningPointsAreFoundBetweenSteps) {
   const std::vector<CycleEvent> events = detect_cycle_events(cosine(t0, period, step, 5));
   int shrink = 0, refill = 0;
   for (const CycleEvent& e : events) {
-    const double phase_t = e.kind == CycleEventKind::kShrinkOnset ? t0 : t0 + period / 2;
+    const double phase_t = e.kind == CycleEventKind::kSystoleStart ? t0 : t0 + period / 2;
     if (e.kind == CycleEventKind::kPeakRefill) continue;
     const double k = std::round((e.time_s - phase_t) / period);
     // A parabola through three samples of a cosine 50 samples long: within 1 % of a step.
     EXPECT_NEAR(e.time_s, phase_t + k * period, 0.01 * step) << int(e.kind) << " at " << e.time_s;
-    (e.kind == CycleEventKind::kShrinkOnset ? shrink : refill)++;
+    (e.kind == CycleEventKind::kSystoleStart ? shrink : refill)++;
   }
   EXPECT_EQ(shrink, 6);
   EXPECT_EQ(refill, 6);
@@ -48,7 +48,7 @@ TEST(CycleEvents, SmallRingingIsNotABeat) {
   // A ripple of a tenth of the swing at 23 Hz turns the signal many times near its plateaus.
   const std::vector<CycleEvent> events = detect_cycle_events(cosine(0.3, 1.0, 1.0 / 240, 4.1, 0.005));
   int shrink = 0;
-  for (const CycleEvent& e : events) shrink += e.kind == CycleEventKind::kShrinkOnset;
+  for (const CycleEvent& e : events) shrink += e.kind == CycleEventKind::kSystoleStart;
   EXPECT_EQ(shrink, 4);
 }
 
@@ -67,8 +67,8 @@ TEST(CycleEvents, TheBeatingHeartShrinksOnceAndRefillsOncePerBeat) {
   int shrink = 0, refill = 0;
   for (const CycleEvent& e : detect_cycle_events(samples)) {
     std::cout << "[ event ] " << int(e.kind) << " at " << e.time_s << " s\n";
-    shrink += e.kind == CycleEventKind::kShrinkOnset;
-    refill += e.kind == CycleEventKind::kRefillOnset;
+    shrink += e.kind == CycleEventKind::kSystoleStart;
+    refill += e.kind == CycleEventKind::kSystoleEnd;
   }
   // 72 bpm for 3 s: 3.6 beats, each a contraction and a relaxation.
   EXPECT_GE(shrink, 3);
