@@ -81,6 +81,9 @@ std::vector<std::string> PhysiologyReport::outside_normal() const {
 
 PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats) {
   world::World world = world::build_world(scene);
+  // The beat is found in organ time from 0, whatever part of it the clip shows (a loop
+  // starts after its settling beats: output.start_frame).
+  world.start_frame = 0;
   PhysiologyReport report;
   report.scene = scene.path;
   int organ = -1;
@@ -147,6 +150,11 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   std::vector<int> beat;
   for (std::size_t i = 0; i < times.size(); ++i) {
     if (times[i] >= start - 1e-9 && times[i] < start + report.beat_s - 1e-9) beat.push_back(static_cast<int>(i));
+  }
+  if (beat.size() < 2) {
+    throw Error(ExitCode::kUsage, scene.path + ": --physiology samples a beat at the scene's frames, and frames " +
+                                      std::to_string(world.frame_s) + " s apart leave fewer than two in a beat of " +
+                                      std::to_string(report.beat_s) + " s; raise output.fps");
   }
   for (std::size_t c = 0; c < anatomy.cavities.size(); ++c) {
     ChamberVolume chamber{anatomy.cavities[c].name, -HUGE_VAL, HUGE_VAL};

@@ -298,6 +298,28 @@ TEST(Physiology, AnInfarctedSegmentDoesNotThickenAndTheEjectionFractionFalls) {
   EXPECT_LT(infarct.ejection_fraction_pct, normal.ejection_fraction_pct - 5);
 }
 
+// scenes/heart-slowmo-loop.yaml shows a loop from organ time 1.67 s (output.start_frame),
+// at quarter speed: the beat is still found in organ time (it once read past its frames and
+// crashed), and the heart is the normal one.
+TEST(Physiology, ALoopAtQuarterSpeedIsMeasuredInOrganTime) {
+  const scene::Scene loop = scene::load(test::source("scenes/heart-slowmo-loop.yaml"));
+  ASSERT_GT(loop.output.start_frame, 0);
+  const PhysiologyReport r = measure_physiology(loop);
+  EXPECT_NEAR(r.frame_s, 1.0 / 120, 1e-12) << "four frames of video a frame of organ time at 30 fps";
+  EXPECT_TRUE(r.outside_normal().empty()) << physiology_text(r);
+}
+
+TEST(Physiology, RefusesFramesTooFarApartForABeat) {
+  const scene::Scene slow = scene::load(test::source("scenes/heart.yaml"), {"output.fps=1"});
+  try {
+    measure_physiology(slow);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kUsage);
+    EXPECT_NE(std::string(e.what()).find("output.fps"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Physiology, RefusesAnOrganWithoutAnatomy) {
   scene::Scene s = anatomical_heart(0.2);
   s.organs[0].mesh.procedural = "heart";
