@@ -115,13 +115,13 @@ audio::MixRequest mix_request(const scene::Scene& scene, const SoundSources& src
     const scene::HeartAudio& h = a.heart;
     for (const world::CycleEvent& e : src.events) {
       if (!in_clip(e.time_s)) continue;
-      const scene::HeartTone& tone = e.kind == world::CycleEventKind::kSystoleStart   ? h.s1
+      const scene::HeartTone& tone = e.kind == world::CycleEventKind::kSystoleStart ? h.s1
                                      : e.kind == world::CycleEventKind::kSystoleEnd ? h.s2
-                                                                                     : h.s3;
+                                                                                    : h.s3;
       if (!tone.enabled) continue;
-      const audio::SoundKind kind = e.kind == world::CycleEventKind::kSystoleStart   ? audio::SoundKind::kS1
+      const audio::SoundKind kind = e.kind == world::CycleEventKind::kSystoleStart ? audio::SoundKind::kS1
                                     : e.kind == world::CycleEventKind::kSystoleEnd ? audio::SoundKind::kS2
-                                                                                    : audio::SoundKind::kS3;
+                                                                                   : audio::SoundKind::kS3;
       r.events.push_back({kind, clock.video_s(e.time_s), site_weight(h.stethoscope, kind) * audio::gain_of_db(tone.level_db)});
     }
     if (h.murmur.enabled) {

@@ -10,6 +10,7 @@
 
 #include "audio/soundtrack.h"
 #include "scene/scene.h"
+#include "sim/circulation.h"
 #include "world/sound_sources.h"
 #include "world/world.h"
 
@@ -18,7 +19,8 @@ namespace systole::clip {
 /// What the soundtrack reads from one run of the simulation, in organ time.
 struct SoundSources {
   std::vector<world::Sample> ventricle_size;  ///< audio.heart's regions, every step. unit: m
-  std::vector<world::CycleEvent> events;      ///< S1, S2, S3 instants: the size's turning points, or with blood the valves'.
+  /// S1, S2 and S3 instants: the size's turning points (with blood, S1 and S2 the valves').
+  std::vector<world::CycleEvent> events;
   std::vector<world::Sample> breath_volume;   ///< audio.breath's organ, every step. unit: m^3
 };
 
