@@ -38,12 +38,13 @@ Chamber chamber_of(const mesh::Cavity& cavity, const mesh::Anatomy& anatomy, con
     return Eigen::Vector3d(c / static_cast<double>(vertices.size()));
   };
   for (const std::vector<int>& rim : cavity.rims) {
+    const Eigen::Vector3d rim_centre = centroid(rim);
     const mesh::Valve* nearest = nullptr;
+    double nearest_m = 0;
     for (const mesh::Valve& valve : anatomy.valves) {
       if (valve.chamber != cavity.name || valve.vertices.empty()) continue;
-      if (!nearest || (centroid(valve.vertices) - centroid(rim)).norm() < (centroid(nearest->vertices) - centroid(rim)).norm()) {
-        nearest = &valve;
-      }
+      const double m = (centroid(valve.vertices) - rim_centre).norm();
+      if (!nearest || m < nearest_m) nearest = &valve, nearest_m = m;
     }
     const int first = static_cast<int>(chamber.triangles.size());
     const int last = first + static_cast<int>(rim.size());

@@ -315,8 +315,9 @@ void refresh_volume_hessian(const Model& model, ProjectiveCache& c, const Factor
 }
 
 /// The ventricles' blood for one step (sim/circulation.h): per chamber whose valves are both
-/// shut, z = A^-1 g0 with g0 = grad V at the step's start (free rows): the direction in
-/// which the global step moves the body to hold the chamber's volume.
+/// shut, z = A^-1 f with f the blood's push at unit pressure at the step's start (free rows;
+/// the volume's gradient, but for the share the chordae carry to the wall): the direction in
+/// which the pressure moves the body to hold the chamber's volume.
 struct HeldChambers {
   std::vector<int> chamber;
   std::vector<Rows> z;

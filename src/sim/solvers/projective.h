@@ -28,9 +28,10 @@
 //
 // A heart with blood (sim/circulation.h) adds, per ventricle whose valves are both shut, a
 // hard constraint V_i(x) = V_shut,i: each iteration moves the global step's result along
-// z_i = A^-1 g_i (g_i its volume gradient at the step's start) by the multipliers that bring
-// the linearized volumes back, which are the ventricles' pressures; a filling or ejecting
-// ventricle's pressure is a load on its faces in the right-hand side.
+// z_i = A^-1 f_i (f_i the blood's push at unit pressure at the step's start: the volume's
+// gradient, but for the chordae's share) by the multipliers that bring the linearized
+// volumes back, which are the ventricles' pressures; a filling or ejecting ventricle's
+// pressure is a load on its faces in the right-hand side.
 
 #include "sim/model.h"
 #include "sim/state.h"
