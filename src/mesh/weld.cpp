@@ -25,34 +25,24 @@ CellKey hash_cell(std::int64_t x, std::int64_t y, std::int64_t z) {
          static_cast<CellKey>(z) * 83492791ULL;
 }
 
-}  // namespace
+// Where each vertex goes: its new index, and the old index of every vertex kept.
+struct WeldMap {
+  std::vector<int> remap;
+  std::vector<int> kept;
+};
 
-double default_weld_tolerance(const TriangleMesh& mesh) {
-  if (mesh.positions.empty()) return 0;
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
-  for (const Eigen::Vector3d& p : mesh.positions) {
-    if (!p.allFinite()) continue;
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  if (!(hi.array() >= lo.array()).all()) return 0;
-  return 1e-6 * (hi - lo).norm();
-}
-
-int weld(OrganMesh& mesh, double tolerance) {
-  std::vector<Eigen::Vector3d>& positions = mesh.surface.positions;
+// Each vertex maps to the first earlier vertex within the tolerance (a representative),
+// searched in the 27 cells around it; the first vertex of a cluster keeps its position.
+WeldMap find_representatives(const std::vector<Eigen::Vector3d>& positions, double tolerance) {
   const int n = static_cast<int>(positions.size());
   // With no tolerance, only identical positions merge: a tiny cell still finds them.
   const double cell = tolerance > 0 ? tolerance : std::numeric_limits<double>::min();
   const double tol2 = tolerance * tolerance;
-
-  // Each vertex maps to the first earlier vertex within the tolerance (a representative),
-  // searched in the 27 cells around it; the first vertex of a cluster keeps its position.
   std::unordered_map<CellKey, std::vector<int>> grid;
   grid.reserve(static_cast<size_t>(n));
-  std::vector<int> remap(static_cast<size_t>(n), -1);
-  std::vector<int> kept;
+  WeldMap map{std::vector<int>(static_cast<size_t>(n), -1), {}};
+  std::vector<int>& remap = map.remap;
+  std::vector<int>& kept = map.kept;
   kept.reserve(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d& p = positions[static_cast<size_t>(i)];
@@ -85,6 +75,48 @@ int weld(OrganMesh& mesh, double tolerance) {
       grid[hash_cell(cx, cy, cz)].push_back(i);
     }
   }
+  return map;
+}
+
+// The triangles in the new numbering, without those the weld collapsed.
+std::vector<Eigen::Vector3i> remap_triangles(const std::vector<Eigen::Vector3i>& old, const std::vector<int>& remap) {
+  const int n = static_cast<int>(remap.size());
+  std::vector<Eigen::Vector3i> triangles;
+  triangles.reserve(old.size());
+  for (const Eigen::Vector3i& t : old) {
+    if ((t.array() < 0).any() || (t.array() >= n).any()) {
+      triangles.push_back(Eigen::Vector3i(-1, -1, -1));  // Kept invalid: inspect() reports it.
+      continue;
+    }
+    const Eigen::Vector3i w(remap[static_cast<size_t>(t[0])], remap[static_cast<size_t>(t[1])],
+                            remap[static_cast<size_t>(t[2])]);
+    if (w[0] == w[1] || w[1] == w[2] || w[2] == w[0]) continue;  // Collapsed by the weld.
+    triangles.push_back(w);
+  }
+  return triangles;
+}
+
+}  // namespace
+
+double default_weld_tolerance(const TriangleMesh& mesh) {
+  if (mesh.positions.empty()) return 0;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (const Eigen::Vector3d& p : mesh.positions) {
+    if (!p.allFinite()) continue;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (!(hi.array() >= lo.array()).all()) return 0;
+  return 1e-6 * (hi - lo).norm();
+}
+
+int weld(OrganMesh& mesh, double tolerance) {
+  std::vector<Eigen::Vector3d>& positions = mesh.surface.positions;
+  const int n = static_cast<int>(positions.size());
+  const WeldMap map = find_representatives(positions, tolerance);
+  const std::vector<int>& remap = map.remap;
+  const std::vector<int>& kept = map.kept;
 
   std::vector<Eigen::Vector3d> new_positions;
   new_positions.reserve(kept.size());
@@ -107,18 +139,7 @@ int weld(OrganMesh& mesh, double tolerance) {
     if (membership.first >= 0 && membership.first < n) membership.first = remap[static_cast<size_t>(membership.first)];
   }
 
-  std::vector<Eigen::Vector3i> triangles;
-  triangles.reserve(mesh.surface.triangles.size());
-  for (const Eigen::Vector3i& t : mesh.surface.triangles) {
-    if ((t.array() < 0).any() || (t.array() >= n).any()) {
-      triangles.push_back(Eigen::Vector3i(-1, -1, -1));  // Kept invalid: inspect() reports it.
-      continue;
-    }
-    const Eigen::Vector3i w(remap[static_cast<size_t>(t[0])], remap[static_cast<size_t>(t[1])],
-                            remap[static_cast<size_t>(t[2])]);
-    if (w[0] == w[1] || w[1] == w[2] || w[2] == w[0]) continue;  // Collapsed by the weld.
-    triangles.push_back(w);
-  }
+  std::vector<Eigen::Vector3i> triangles = remap_triangles(mesh.surface.triangles, remap);
 
   const int removed = n - static_cast<int>(kept.size());
   positions = std::move(new_positions);
