@@ -23,6 +23,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "mesh/procedural/organs.h"
@@ -106,6 +107,44 @@ double helix(double across, double along) { return along < kAnnulusAlong ? (60.0
 // shortens along its fibres alone, twists it.
 double cross_fibre(double across, double) { return 1.0 - 0.9 * across; }
 
+// Where the right wall meets the left, shared by its shape and its parts: its lean towards
+// the left's apex, its meridian's heights, the contact with the left wall, its appendage.
+struct RightMeetsLeft {
+  const Wall* left;
+  Vec e1, e2;
+  std::vector<double> heights;  // unit: m
+  double appendage_around;      // unit: rad
+
+  // The ventricle leans towards the left's apex: its rings below the annulus move towards
+  // the left wall's axis, most at its own apex, so its lower end runs into the left's apex
+  // instead of rounding off beside it as a second ball. unit: m
+  static double lean(double along) {
+    return along >= kAnnulusAlong ? 0.0 : kRightLean * std::pow(1 - along / kAnnulusAlong, 2);
+  }
+  double height_at(double along) const {  // Linear is close enough to decide the contact.
+    const double u = along * (heights.size() - 1);
+    const int i = std::min(static_cast<int>(u), static_cast<int>(heights.size()) - 2);
+    return heights[i] + (u - i) * (heights[i + 1] - heights[i]);
+  }
+  // Where a ray from the right wall's axis meets the left wall's outside, in the plane at
+  // this height: the right wall stops there (overlapping a little), so the septum is one
+  // wall and the right ventricle a crescent round the left. 0: no contact.
+  double contact(double around, double along) const {
+    const double left_radius = left->outside_radius_at(height_at(along) + kRightLower, 0);
+    if (left_radius <= 0) return 0.0;
+    const double offset = kRightOffset - lean(along);  // Between the two axes here.
+    const Vec ray = std::cos(around) * e1 + std::sin(around) * e2;
+    const double c_dot_u = offset * ray.dot(-e1);  // Right axis minus left axis, along the ray.
+    const double disc = c_dot_u * c_dot_u - offset * offset + left_radius * left_radius;
+    if (disc < 0) return 0.0;
+    const double r = -c_dot_u - std::sqrt(disc);
+    return r > 0 ? r : 0.0;
+  }
+  double appendage(double around, double along) const {
+    return std::exp(-std::pow(angle_between(around, appendage_around) / 0.4, 2) - std::pow((along - 0.70) / 0.07, 2));
+  }
+};
+
 class Heart {
  public:
   explicit Heart(int detail) : builder_(kPartNames), detail_(detail) {}
@@ -115,6 +154,7 @@ class Heart {
   int part(const char* name) const { return builder_.part(name); }
   Wall make_left();
   Wall make_right(const Wall& left);
+  std::function<double(double, double, double, double)> right_radius(const RightMeetsLeft& g, const Vec& origin) const;
   Wall make_vessel(const char* name, const Vec& root, const Vec& direction, double radius, double thickness,
                    double length);
   void glue_root(const Wall& vessel, const Wall& chamber);
@@ -166,56 +206,55 @@ Wall Heart::make_right(const Wall& left) {
   w.thickness = in_metres(kRightThickness);
   w.helix_rad = helix;
   w.cross_fibre = cross_fibre;
-  const Vec e1 = w.e1, e2 = w.e2;
-  // The ventricle leans towards the left's apex: its rings below the annulus move towards
-  // the left wall's axis, most at its own apex, so its lower end runs into the left's apex
-  // instead of rounding off beside it as a second ball. unit: m
-  const auto lean = [](double along) {
-    return along >= kAnnulusAlong ? 0.0 : kRightLean * std::pow(1 - along / kAnnulusAlong, 2);
-  };
   const Vec towards_left = layout_.to_right_heart;
-  w.shift = [=](double along) -> Vec { return -lean(along) * towards_left; };
-  const std::vector<double> heights = in_metres(kRightHeight);
-  auto height_at = [heights](double along) {  // Linear is close enough to decide the contact.
-    const double u = along * (heights.size() - 1);
-    const int i = std::min(static_cast<int>(u), static_cast<int>(heights.size()) - 2);
-    return heights[i] + (u - i) * (heights[i + 1] - heights[i]);
+  w.shift = [=](double along) -> Vec { return -RightMeetsLeft::lean(along) * towards_left; };
+  const RightMeetsLeft g{&left, w.e1, w.e2, in_metres(kRightHeight),
+                         around_towards(w, (layout_.anterior - 0.6 * layout_.left).normalized())};
+  w.shape_radius = right_radius(g, origin);
+  const int rv = part("right_ventricle"), ra = part("right_atrium");
+  const int rv_cavity = part("right_ventricle_cavity"), ra_cavity = part("right_atrium_cavity");
+  const int ivs = part("interventricular_septum"), ias = part("interatrial_septum");
+  const int raa = part("right_atrial_appendage");
+  const auto septal = [=](double around, double along, double radius_limit) {
+    return g.contact(around, along) > 0 && g.contact(around, along) < radius_limit;
   };
-  // Where a ray from the right wall's axis meets the left wall's outside, in the plane at
-  // this height: the right wall stops there (overlapping a little), so the septum is one
-  // wall and the right ventricle a crescent round the left. 0: no contact.
-  const auto contact = [&left, e1, e2, lean, height_at](double around, double along) {
-    const double left_radius = left.outside_radius_at(height_at(along) + kRightLower, 0);
-    if (left_radius <= 0) return 0.0;
-    const double offset = kRightOffset - lean(along);  // Between the two axes here.
-    const Vec ray = std::cos(around) * e1 + std::sin(around) * e2;
-    const double c_dot_u = offset * ray.dot(-e1);  // Right axis minus left axis, along the ray.
-    const double disc = c_dot_u * c_dot_u - offset * offset + left_radius * left_radius;
-    if (disc < 0) return 0.0;
-    const double r = -c_dot_u - std::sqrt(disc);
-    return r > 0 ? r : 0.0;
-  };
-  const double appendage_around = around_towards(w, (layout_.anterior - 0.6 * layout_.left).normalized());
-  auto appendage = [appendage_around](double around, double along) {
-    return std::exp(-std::pow(angle_between(around, appendage_around) / 0.4, 2) - std::pow((along - 0.70) / 0.07, 2));
-  };
-  // The ventricle's free wall lies behind two planes, its flat faces: the sternocostal face
-  // in front, turned towards the apex and the left so it recedes into the interventricular
-  // groove and the apex (one cone with the left ventricle from the front, not a second
-  // ball), and the diaphragmatic face below, rising to the right; they meet at the acute
-  // margin. The wall is wider than its meridian says to keep its cavity's volume.
+  Wall right(builder_, w, [=](const WallPoint& p, bool drawn) {
+    const bool ventricle = p.along <= kAnnulusAlong + 1e-9;
+    std::vector<int> parts;
+    if (drawn && p.across == 0) parts.push_back(ventricle ? rv_cavity : ra_cavity);
+    parts.push_back(ventricle ? rv : ra);
+    if (septal(p.around, p.along, 0.04)) parts.push_back(ventricle ? ivs : ias);
+    if (!ventricle && g.appendage(p.around, p.along) > 0.3) parts.push_back(raa);
+    return parts;
+  });
+  // Glue the septum: each outside node where the walls meet holds to the left wall's nearest.
+  for (int n : right.outside_nodes()) {
+    const Vec& x = builder_.node_position(n);
+    for (int m : left.nodes_near(x, 6 * mm, 2, true)) builder_.glue(n, m);
+  }
+  return right;
+}
+
+// The ventricle's free wall lies behind two planes, its flat faces: the sternocostal face
+// in front, turned towards the apex and the left so it recedes into the interventricular
+// groove and the apex (one cone with the left ventricle from the front, not a second
+// ball), and the diaphragmatic face below, rising to the right; they meet at the acute
+// margin. The wall is wider than its meridian says to keep its cavity's volume.
+std::function<double(double, double, double, double)> Heart::right_radius(const RightMeetsLeft& g,
+                                                                          const Vec& origin) const {
+  const Vec towards_left = layout_.to_right_heart;
   const Vec front = (layout_.anterior + 0.3 * layout_.axis + 1.0 * layout_.left).normalized();
   const double front_from_origin = front.dot(origin) + 24 * mm;
   const Vec below = Vec(-0.5, -1, 0).normalized();
   const double below_from_origin = below.dot(origin) + 44 * mm;
   const Vec axis = layout_.axis;
-  w.shape_radius = [=](double around, double along, double radius, double thickness) {
+  return [=](double around, double along, double radius, double thickness) {
     // The ventricle only (the atrium keeps its size), blended over the annulus.
     radius *= 1 + (kRightWiden - 1) * std::clamp((kAnnulusAlong + 0.04 - along) / 0.08, 0.0, 1.0);
-    double r = radius + 9 * mm * appendage(around, along);
+    double r = radius + 9 * mm * g.appendage(around, along);
     if (along <= kAnnulusAlong + 0.05) {
-      const Vec ray = std::cos(around) * e1 + std::sin(around) * e2;
-      const Vec centre = origin + height_at(along) * axis - lean(along) * towards_left;
+      const Vec ray = std::cos(around) * g.e1 + std::sin(around) * g.e2;
+      const Vec centre = origin + g.height_at(along) * axis - g.lean(along) * towards_left;
       constexpr double soft = 3 * mm;  // A smooth minimum: the faces meet the round wall without a crease.
       double limit = r;
       for (const auto& [n, d] : {std::pair{front, front_from_origin}, std::pair{below, below_from_origin}}) {
@@ -228,33 +267,11 @@ Wall Heart::make_right(const Wall& left) {
     }
     // Near its apex the leaning wall nearly touches the left's: it may thin to a slit there,
     // but never reach through the septum into the left cavity.
-    if (const double meet = contact(around, along); meet > 0) {
+    if (const double meet = g.contact(around, along); meet > 0) {
       r = std::max(0.05 * radius, std::min(r, meet + kSeptumOverlap - thickness));
     }
     return r;
   };
-  const int rv = part("right_ventricle"), ra = part("right_atrium");
-  const int rv_cavity = part("right_ventricle_cavity"), ra_cavity = part("right_atrium_cavity");
-  const int ivs = part("interventricular_septum"), ias = part("interatrial_septum");
-  const int raa = part("right_atrial_appendage");
-  const auto septal = [=](double around, double along, double radius_limit) {
-    return contact(around, along) > 0 && contact(around, along) < radius_limit;
-  };
-  Wall right(builder_, w, [=](const WallPoint& p, bool drawn) {
-    const bool ventricle = p.along <= kAnnulusAlong + 1e-9;
-    std::vector<int> parts;
-    if (drawn && p.across == 0) parts.push_back(ventricle ? rv_cavity : ra_cavity);
-    parts.push_back(ventricle ? rv : ra);
-    if (septal(p.around, p.along, 0.04)) parts.push_back(ventricle ? ivs : ias);
-    if (!ventricle && appendage(p.around, p.along) > 0.3) parts.push_back(raa);
-    return parts;
-  });
-  // Glue the septum: each outside node where the walls meet holds to the left wall's nearest.
-  for (int n : right.outside_nodes()) {
-    const Vec& x = builder_.node_position(n);
-    for (int m : left.nodes_near(x, 6 * mm, 2, true)) builder_.glue(n, m);
-  }
-  return right;
 }
 
 Wall Heart::make_vessel(const char* name, const Vec& root, const Vec& direction, double radius, double thickness,

@@ -33,10 +33,18 @@ double cell_volume(const std::vector<Vec>& x) {
 
 Wall::Wall(HeartBuilder& builder, WallShape shape, const PartsAt& parts) : builder_(builder), shape_(std::move(shape)) {
   const int keys = static_cast<int>(shape_.height.size());
-  const int columns = shape_.columns, layers = shape_.layers;
   rows_ = (keys - 1) * shape_.rows_per_key;
   first_node_ = -1;
-  // Lattice nodes: layer by layer, pole, rings, pole (a tube: rings only).
+  add_nodes(parts);
+  add_cells();
+  draw_rows_ = (keys - 1) * shape_.draw_rows_per_key + 1;
+  add_drawn_vertices(parts);
+  add_surfaces();
+}
+
+// Lattice nodes: layer by layer, pole, rings, pole (a tube: rings only).
+void Wall::add_nodes(const PartsAt& parts) {
+  const int columns = shape_.columns, layers = shape_.layers;
   for (int k = 0; k <= layers; ++k) {
     for (int r = 0; r <= rows_; ++r) {
       const bool pole = !shape_.tube && (r == 0 || r == rows_);
@@ -55,7 +63,11 @@ Wall::Wall(HeartBuilder& builder, WallShape shape, const PartsAt& parts) : build
       }
     }
   }
-  // Cells: hexahedra, and wedges round the poles.
+}
+
+// Cells: hexahedra, and wedges round the poles.
+void Wall::add_cells() {
+  const int columns = shape_.columns, layers = shape_.layers;
   for (int k = 0; k < layers; ++k) {
     for (int r = 0; r < rows_; ++r) {
       for (int c = 0; c < columns; ++c) {
@@ -73,8 +85,11 @@ Wall::Wall(HeartBuilder& builder, WallShape shape, const PartsAt& parts) : build
       }
     }
   }
-  // Drawn surfaces: the lining (across 0) and the outside (across 1).
-  draw_rows_ = (keys - 1) * shape_.draw_rows_per_key + 1;
+}
+
+// Drawn surfaces: the lining (across 0) and the outside (across 1), each vertex carried by
+// the lattice nodes round it.
+void Wall::add_drawn_vertices(const PartsAt& parts) {
   const int draw_columns = shape_.draw_columns;
   drawn_.assign(2 * draw_rows_ * draw_columns, -1);
   for (int across = 0; across < 2; ++across) {
@@ -94,7 +109,11 @@ Wall::Wall(HeartBuilder& builder, WallShape shape, const PartsAt& parts) : build
       }
     }
   }
-  // Triangles facing out of the muscle: the outside away from the axis, the lining into the blood.
+}
+
+// Triangles facing out of the muscle: the outside away from the axis, the lining into the blood.
+void Wall::add_surfaces() {
+  const int draw_columns = shape_.draw_columns;
   lining_band_.resize(draw_rows_ - 1);
   auto add_rim = [&](int a, int b, int c, const Vec& out) {
     if (const auto added = builder_.add_triangle_facing(a, b, c, out)) triangles_.push_back(*added);

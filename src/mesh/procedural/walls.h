@@ -102,6 +102,11 @@ class Wall {
   /// shift's slope where the axis bends.
   Vec outward(double around, double along, const Eigen::Vector2d& normal) const;
   int node(int layer, int row, int column) const;  ///< row 0 and rows_ are the poles (closed walls).
+  // The constructor's steps, in order: lattice nodes, cells, drawn vertices, triangles.
+  void add_nodes(const PartsAt& parts);
+  void add_cells();
+  void add_drawn_vertices(const PartsAt& parts);
+  void add_surfaces();
 
   HeartBuilder& builder_;
   WallShape shape_;
