@@ -164,8 +164,14 @@ Model build_model(const OrganParams& organ, const mesh::OrganGeometry& geometry,
   return build_model(organ, surface_body(organ, geometry), options);
 }
 
-Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions& options) {
-  Model m;
+namespace {
+
+// A particle's region, or -1 on a body without regions.
+int region_of(const Model& m, int v) { return m.vertex_region.empty() ? -1 : m.vertex_region[v]; }
+
+// The solver's settings, the regions and each driven region's irregular beats, drawn in
+// region order so each region keeps its own stream.
+void set_regions(Model& m, const OrganParams& organ, const ModelOptions& options) {
   m.name = organ.name;
   m.method = options.solver.method;
   m.substeps = options.solver.substeps;
@@ -184,8 +190,12 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
     }
     m.beat_boundaries.push_back(std::move(beats));
   }
-  m.vertex_region = std::move(parts.particle_region);
+}
 
+// Rest positions and inverse masses, pinned regions held (zero inverse mass) and moved
+// regions listed as kinematic.
+void set_particles(Model& m, BodyParts& parts) {
+  m.vertex_region = std::move(parts.particle_region);
   const int n = static_cast<int>(parts.rest_positions.cols());
   m.rest_positions = std::move(parts.rest_positions);
   if (n > 0) {
@@ -193,9 +203,8 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
   }
 
   m.inverse_mass = parts.mass_kg.cwiseInverse();
-  auto region_of = [&](int v) { return m.vertex_region.empty() ? -1 : m.vertex_region[v]; };
   for (int i = 0; i < n; ++i) {
-    const int r = region_of(i);
+    const int r = region_of(m, i);
     if (r >= 0 && m.regions[r].pinned) m.inverse_mass[i] = 0;
   }
   for (std::size_t r = 0; r < m.regions.size(); ++r) {
@@ -203,11 +212,16 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
     KinematicRegion k;
     k.motion = m.regions[r].motion;
     for (int i = 0; i < n; ++i)
-      if (region_of(i) == static_cast<int>(r)) k.particles.push_back(i);
+      if (region_of(m, i) == static_cast<int>(r)) k.particles.push_back(i);
     m.kinematic.push_back(std::move(k));
   }
+}
 
-  // A spring between two pinned particles does nothing and is not built.
+// The springs, stored by colour so springs of one colour share no particle, each with
+// its region's blended stiffness and damping. A spring between two pinned particles does
+// nothing and is not built.
+void build_springs(Model& m, const OrganParams& organ, const BodyParts& parts) {
+  const int n = static_cast<int>(m.rest_positions.cols());
   std::vector<int> a, b, kept;
   std::vector<double> stiffness;
   for (std::size_t p = 0; p < parts.springs.size(); ++p) {
@@ -231,7 +245,7 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
   std::partial_sum(s.color_begin.begin(), s.color_begin.end(), s.color_begin.begin());
   for (int idx : order) {
     const int i = a[idx], j = b[idx];
-    const int ri = region_of(i), rj = region_of(j);
+    const int ri = region_of(m, i), rj = region_of(m, j);
     const double stiffness_scale = boundary_blend(m.regions, ri, rj, &RegionParams::stiffness_scale);
     const double damping_scale = boundary_blend(m.regions, ri, rj, &RegionParams::damping_scale);
     s.a.push_back(i);
@@ -248,8 +262,10 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
     }
   }
   if (!parts.fibre_share.empty()) s.fibre_tension = organ.body.fibre_tension;
+}
 
-  // The volume constraint needs a closed surface.
+// The volume constraint needs a closed surface; a volume drive without one is an error.
+void build_volume(Model& m, const OrganParams& organ, BodyParts& parts, const ModelOptions& options) {
   if (organ.body.volume_stiffness_Pa > 0 && !parts.volume_triangles.empty()) {
     m.volume.enabled = true;
     m.volume.triangles = std::move(parts.volume_triangles);
@@ -269,6 +285,16 @@ Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions&
                                                ? std::string("a closed surface (this one is open or non-manifold: see the mesh report)")
                                                : std::string("body.volume_stiffness > 0")));
   }
+}
+
+}  // namespace
+
+Model build_model(const OrganParams& organ, BodyParts parts, const ModelOptions& options) {
+  Model m;
+  set_regions(m, organ, options);
+  set_particles(m, parts);
+  build_springs(m, organ, parts);
+  build_volume(m, organ, parts, options);
   add_interactions(m, options.interactions, parts.interaction_reach_m);
   add_tethers(m);
   if (options.solver.auto_substeps) {

@@ -8,6 +8,41 @@
 namespace systole::sim {
 namespace {
 
+// The valve of this chamber nearest a rim of its lining (centroid to centroid), or none:
+// which cap the rim closes, inflow or outflow.
+const mesh::Valve* nearest_valve(const mesh::Cavity& cavity, const mesh::Anatomy& anatomy,
+                                 const std::vector<Eigen::Vector3d>& surface, const std::vector<int>& rim) {
+  auto centroid = [&](const std::vector<int>& vertices) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int v : vertices) c += surface[static_cast<std::size_t>(v)];
+    return Eigen::Vector3d(c / static_cast<double>(vertices.size()));
+  };
+  const Eigen::Vector3d rim_centre = centroid(rim);
+  const mesh::Valve* nearest = nullptr;
+  double nearest_m = 0;
+  for (const mesh::Valve& valve : anatomy.valves) {
+    if (valve.chamber != cavity.name || valve.vertices.empty()) continue;
+    const double m = (centroid(valve.vertices) - rim_centre).norm();
+    if (!nearest || m < nearest_m) nearest = &valve, nearest_m = m;
+  }
+  return nearest;
+}
+
+// Stores the chamber's points flat: each point's offset and its run of particle terms.
+void store_points(Chamber& chamber, const std::vector<std::map<int, double>>& terms,
+                  const std::vector<Eigen::Vector3d>& offsets) {
+  chamber.point_offset.resize(3, static_cast<Eigen::Index>(offsets.size()));
+  chamber.point_begin.push_back(0);
+  for (std::size_t p = 0; p < terms.size(); ++p) {
+    chamber.point_offset.col(static_cast<Eigen::Index>(p)) = offsets[p];
+    for (const auto& [particle, weight] : terms[p]) {
+      chamber.term_particle.push_back(particle);
+      chamber.term_weight.push_back(weight);
+    }
+    chamber.point_begin.push_back(static_cast<int>(chamber.term_particle.size()));
+  }
+}
+
 /// A ventricle's cavity over the body's particles: each lining vertex where the embedding
 /// carries it, a cap across each annulus fanned from the rim's centre (mesh::cavity_volume's
 /// closure), every triangle turned to face out of the blood. Each cap belongs to the valve
@@ -32,20 +67,8 @@ Chamber chamber_of(const mesh::Cavity& cavity, const mesh::Anatomy& anatomy, con
     return it->second;
   };
   for (const Eigen::Vector3i& t : cavity.lining) chamber.triangles.emplace_back(point(t[0]), point(t[2]), point(t[1]));
-  auto centroid = [&](const std::vector<int>& vertices) {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (int v : vertices) c += surface[static_cast<std::size_t>(v)];
-    return Eigen::Vector3d(c / static_cast<double>(vertices.size()));
-  };
   for (const std::vector<int>& rim : cavity.rims) {
-    const Eigen::Vector3d rim_centre = centroid(rim);
-    const mesh::Valve* nearest = nullptr;
-    double nearest_m = 0;
-    for (const mesh::Valve& valve : anatomy.valves) {
-      if (valve.chamber != cavity.name || valve.vertices.empty()) continue;
-      const double m = (centroid(valve.vertices) - rim_centre).norm();
-      if (!nearest || m < nearest_m) nearest = &valve, nearest_m = m;
-    }
+    const mesh::Valve* nearest = nearest_valve(cavity, anatomy, surface, rim);
     const int first = static_cast<int>(chamber.triangles.size());
     const int last = first + static_cast<int>(rim.size());
     if (nearest) (nearest->opens_on_filling ? chamber.inflow_cap : chamber.outflow_cap) = {first, last};
@@ -68,16 +91,7 @@ Chamber chamber_of(const mesh::Cavity& cavity, const mesh::Anatomy& anatomy, con
       if (auto it = point_of.find(lv.wall[i].first); it != point_of.end()) chamber.chordae_points.push_back(it->second);
     }
   }
-  chamber.point_offset.resize(3, static_cast<Eigen::Index>(offsets.size()));
-  chamber.point_begin.push_back(0);
-  for (std::size_t p = 0; p < terms.size(); ++p) {
-    chamber.point_offset.col(static_cast<Eigen::Index>(p)) = offsets[p];
-    for (const auto& [particle, weight] : terms[p]) {
-      chamber.term_particle.push_back(particle);
-      chamber.term_weight.push_back(weight);
-    }
-    chamber.point_begin.push_back(static_cast<int>(chamber.term_particle.size()));
-  }
+  store_points(chamber, terms, offsets);
   chamber.rest_m3 = chamber_volume(chamber, rest);
   return chamber;
 }

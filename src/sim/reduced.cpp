@@ -211,6 +211,65 @@ void embed(const Embedding& e, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out)
   }
 }
 
+namespace {
+
+// Mass: each vertex's lumped mass goes to its voxel's corners by its weights; a corner no
+// vertex weighs on (rare) still needs a mass, so every corner has a tenth of the mean.
+// Region: the one whose vertices weigh most on the node; normal: their weighted mean
+// (returned, for matching the stiffness).
+Eigen::Matrix3Xd weigh_nodes(const OrganParams& organ, const mesh::OrganGeometry& geometry, const Eigen::Matrix3Xd& rest,
+                             const Embedding& e, BodyParts& parts) {
+  const auto& surface = geometry.mesh.surface;
+  const int vertex_count = static_cast<int>(surface.positions.size());
+  const int n = static_cast<int>(parts.rest_positions.cols());
+  const Eigen::VectorXd vertex_mass = lumped_masses(rest, surface.triangles, organ.body.mass_kg);
+  parts.mass_kg = Eigen::VectorXd::Constant(n, 0.1 * organ.body.mass_kg / n);
+  const int region_count = static_cast<int>(organ.regions.size());
+  Eigen::MatrixXd region_weight = Eigen::MatrixXd::Zero(region_count + 1, n);
+  std::vector<float> vertex_normal(3 * static_cast<std::size_t>(vertex_count));
+  mesh::vertex_normals(rest.data(), vertex_count, surface.triangles, vertex_normal.data());
+  Eigen::Matrix3Xd node_normal = Eigen::Matrix3Xd::Zero(3, n);
+  for (int v = 0; v < vertex_count; ++v) {
+    const int r = geometry.vertex_region.empty() ? -1 : geometry.vertex_region[v];
+    const Eigen::Vector3d normal(vertex_normal[3 * v], vertex_normal[3 * v + 1], vertex_normal[3 * v + 2]);
+    for (int k = 0; k < 8; ++k) {
+      const int i = e.node(k, v);
+      const double w = e.weight(k, v);
+      parts.mass_kg[i] += 0.9 * w * vertex_mass[v];
+      region_weight(r + 1, i) += w;
+      node_normal.col(i) += w * normal;
+    }
+  }
+  parts.particle_region.resize(n);
+  for (int i = 0; i < n; ++i) {
+    Eigen::Index best = 0;
+    if (region_weight.col(i).maxCoeff(&best) <= 0) best = 0;
+    parts.particle_region[i] = static_cast<int>(best) - 1;
+  }
+  return node_normal;
+}
+
+// Stiffness matched to the surface network's energy under in-plane stretch: the scale of
+// the lattice springs' stiffness.
+double matched_stiffness_scale(const Eigen::Matrix3Xd& rest, const std::vector<Eigen::Vector3i>& triangles,
+                               const BodyParts& parts, const Eigen::Matrix3Xd& node_normal) {
+  double surface_energy = 0;
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k) surface_energy += 0.5 * (rest.col(t[k]) - rest.col(t[(k + 1) % 3])).squaredNorm();
+  }
+  double lattice_energy = 0;
+  for (const auto& [a, b] : parts.springs) {
+    const Eigen::Vector3d d = parts.rest_positions.col(b) - parts.rest_positions.col(a);
+    const Eigen::Vector3d normal = node_normal.col(a) + node_normal.col(b);
+    // With no surface nearby, the mean of (1 - cos^2)^2 over all directions: 8/15.
+    const double in_plane = normal.norm() > 1e-9 ? 1.0 - std::pow(normal.normalized().dot(d.normalized()), 2) : std::sqrt(8.0 / 15.0);
+    lattice_energy += d.squaredNorm() * in_plane * in_plane;
+  }
+  return lattice_energy > 0 ? surface_energy / lattice_energy : 1.0;
+}
+
+}  // namespace
+
 ReducedBody build_reduced_model(const OrganParams& organ, const mesh::OrganGeometry& geometry,
                                 const ModelOptions& options) {
   const auto& surface = geometry.mesh.surface;
@@ -240,49 +299,8 @@ ReducedBody build_reduced_model(const OrganParams& organ, const mesh::OrganGeome
   body.voxels = static_cast<int>(lat.voxel_size.size());
   body.embedding = embed_vertices(surface.positions, lat);
   const Embedding& e = body.embedding;
-
-  // Mass: each vertex's lumped mass goes to its voxel's corners by its weights; a corner no
-  // vertex weighs on (rare) still needs a mass, so every corner has a tenth of the mean.
-  const Eigen::VectorXd vertex_mass = lumped_masses(rest, surface.triangles, organ.body.mass_kg);
-  parts.mass_kg = Eigen::VectorXd::Constant(n, 0.1 * organ.body.mass_kg / n);
-  // Region: the one whose vertices weigh most on the node; normal: their weighted mean.
-  const int region_count = static_cast<int>(organ.regions.size());
-  Eigen::MatrixXd region_weight = Eigen::MatrixXd::Zero(region_count + 1, n);
-  std::vector<float> vertex_normal(3 * static_cast<std::size_t>(vertex_count));
-  mesh::vertex_normals(rest.data(), vertex_count, surface.triangles, vertex_normal.data());
-  Eigen::Matrix3Xd node_normal = Eigen::Matrix3Xd::Zero(3, n);
-  for (int v = 0; v < vertex_count; ++v) {
-    const int r = geometry.vertex_region.empty() ? -1 : geometry.vertex_region[v];
-    const Eigen::Vector3d normal(vertex_normal[3 * v], vertex_normal[3 * v + 1], vertex_normal[3 * v + 2]);
-    for (int k = 0; k < 8; ++k) {
-      const int i = e.node(k, v);
-      const double w = e.weight(k, v);
-      parts.mass_kg[i] += 0.9 * w * vertex_mass[v];
-      region_weight(r + 1, i) += w;
-      node_normal.col(i) += w * normal;
-    }
-  }
-  parts.particle_region.resize(n);
-  for (int i = 0; i < n; ++i) {
-    Eigen::Index best = 0;
-    if (region_weight.col(i).maxCoeff(&best) <= 0) best = 0;
-    parts.particle_region[i] = static_cast<int>(best) - 1;
-  }
-
-  // Stiffness matched to the surface network's energy under in-plane stretch.
-  double surface_energy = 0;
-  for (const auto& t : surface.triangles) {
-    for (int k = 0; k < 3; ++k) surface_energy += 0.5 * (rest.col(t[k]) - rest.col(t[(k + 1) % 3])).squaredNorm();
-  }
-  double lattice_energy = 0;
-  for (const auto& [a, b] : parts.springs) {
-    const Eigen::Vector3d d = parts.rest_positions.col(b) - parts.rest_positions.col(a);
-    const Eigen::Vector3d normal = node_normal.col(a) + node_normal.col(b);
-    // With no surface nearby, the mean of (1 - cos^2)^2 over all directions: 8/15.
-    const double in_plane = normal.norm() > 1e-9 ? 1.0 - std::pow(normal.normalized().dot(d.normalized()), 2) : std::sqrt(8.0 / 15.0);
-    lattice_energy += d.squaredNorm() * in_plane * in_plane;
-  }
-  const double scale = lattice_energy > 0 ? surface_energy / lattice_energy : 1.0;
+  const Eigen::Matrix3Xd node_normal = weigh_nodes(organ, geometry, rest, e, parts);
+  const double scale = matched_stiffness_scale(rest, surface.triangles, parts, node_normal);
   parts.spring_stiffness_N_per_m.assign(parts.springs.size(), scale * organ.body.stiffness_N_per_m);
 
   if (geometry.report.encloses_volume() && !lat.coarse_detail.empty()) {
