@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace systole::overlay {
 namespace {
@@ -66,16 +67,10 @@ double cursor_x(const Rect& plot, const Trace& trace, double now_s) {
   return plot.x + std::clamp((now_s - start) / w, 0.0, 1.0) * plot.width;
 }
 
-void draw_trace(Image& image, const Rect& box, const Trace& trace, double now_s, plot::Font& font,
-                const Style& style) {
-  plot::Canvas canvas(image);
-  canvas.fill(box.x, box.y, box.right(), box.bottom(), style.panel, style.panel_alpha);
-  const Rect plot = trace_plot_area(box, font);
-  const int pad = std::max(3, font.size() / 2);
-  const double title_y = box.y + pad + font.ascent() * 0.8;
-  font.draw(canvas, trace.title, box.x + pad, title_y, style.ink);
+namespace {
 
-  // The value range: given, or every value known so far (it settles after the first cycle).
+// The value range: given, or every value known so far (it settles after the first cycle).
+std::pair<double, double> value_range(const Trace& trace, double now_s) {
   double lo = trace.min, hi = trace.max;
   if (!(lo < hi)) {
     lo = std::numeric_limits<double>::infinity();
@@ -91,6 +86,36 @@ void draw_trace(Image& image, const Rect& box, const Trace& trace, double now_s,
     lo -= margin;
     hi += margin;
   }
+  return {lo, hi};
+}
+
+// Widens a column's [vlo, vhi] to every value between its edges ta and tb, so spikes (the
+// R wave) that fall between pixel centres still show.
+void widen_to_column(const Trace& trace, double ta, double tb, double w, double& vlo, double& vhi) {
+  if (!std::isnan(ta) && !std::isnan(tb) && tb > ta && tb - ta < w) {
+    for (double s : {sample(trace, ta), sample(trace, tb)}) {
+      if (!std::isnan(s)) vlo = std::min(vlo, s), vhi = std::max(vhi, s);
+    }
+    for (auto i = static_cast<std::size_t>(std::ceil(ta / trace.sample_dt_s));
+         double(i) * trace.sample_dt_s < tb && i < trace.values.size(); ++i) {
+      if (double(i) * trace.sample_dt_s <= trace.known_until_s && std::isfinite(trace.values[i]))
+        vlo = std::min(vlo, trace.values[i]), vhi = std::max(vhi, trace.values[i]);
+    }
+  }
+}
+
+}  // namespace
+
+void draw_trace(Image& image, const Rect& box, const Trace& trace, double now_s, plot::Font& font,
+                const Style& style) {
+  plot::Canvas canvas(image);
+  canvas.fill(box.x, box.y, box.right(), box.bottom(), style.panel, style.panel_alpha);
+  const Rect plot = trace_plot_area(box, font);
+  const int pad = std::max(3, font.size() / 2);
+  const double title_y = box.y + pad + font.ascent() * 0.8;
+  font.draw(canvas, trace.title, box.x + pad, title_y, style.ink);
+  const std::pair<double, double> range = value_range(trace, now_s);
+  const double lo = range.first, hi = range.second;
   const auto to_y = [&](double v) { return plot.bottom() - (v - lo) / (hi - lo) * plot.height; };
   canvas.line(plot.x, plot.bottom() - 0.5, plot.right(), plot.bottom() - 0.5, style.ink, 1);  // A faint baseline.
 
@@ -113,16 +138,7 @@ void draw_trace(Image& image, const Rect& box, const Trace& trace, double now_s,
       continue;
     }
     double vlo = v, vhi = v;
-    if (!std::isnan(ta) && !std::isnan(tb) && tb > ta && tb - ta < w) {
-      for (double s : {sample(trace, ta), sample(trace, tb)}) {
-        if (!std::isnan(s)) vlo = std::min(vlo, s), vhi = std::max(vhi, s);
-      }
-      for (auto i = static_cast<std::size_t>(std::ceil(ta / trace.sample_dt_s));
-           double(i) * trace.sample_dt_s < tb && i < trace.values.size(); ++i) {
-        if (double(i) * trace.sample_dt_s <= trace.known_until_s && std::isfinite(trace.values[i]))
-          vlo = std::min(vlo, trace.values[i]), vhi = std::max(vhi, trace.values[i]);
-      }
-    }
+    widen_to_column(trace, ta, tb, w, vlo, vhi);
     const Rgb& color = ahead ? dim : trace.color;
     const double y = to_y(v);
     if (!std::isnan(prev_y)) canvas.line(prev_x, prev_y, x, y, color, line);

@@ -60,31 +60,26 @@ Axis fitted(Axis axis, const std::vector<double>& values) {
   return axis;
 }
 
-}  // namespace
+const Rgb kInk{30, 30, 30};
 
-
-
-Image render(const Figure& figure) {
-  std::vector<double> xs, ys;
-  for (const auto& s : figure.series) {
-    for (const auto& p : s.points) {
-      xs.push_back(p.x);
-      ys.push_back(p.y);
-    }
-  }
-  const Axis x_axis = fitted(figure.x, xs), y_axis = fitted(figure.y, ys);
-
-  Image image(figure.width, figure.height);
-  std::fill(image.rgb.begin(), image.rgb.end(), std::uint8_t{255});
-  Canvas canvas(image);
-  Font font;
-  const Rgb ink{30, 30, 30}, grid{225, 225, 225};
-  const int left = 95, right = figure.width - 30, top = figure.title.empty() ? 30 : 60, bottom = figure.height - 75;
-  auto to_px = [&](double x, double y) {
+// The plot area in pixels and the axes it spans.
+struct PlotArea {
+  Axis x_axis, y_axis;
+  int left, right, top, bottom;
+  std::pair<double, double> to_px(double x, double y) const {
     return std::pair<double, double>{left + axis_fraction(x_axis, x) * (right - left),
                                      bottom - axis_fraction(y_axis, y) * (bottom - top)};
-  };
+  }
+};
 
+// Grid lines with their tick labels, the axis lines, the axis labels and the title.
+void draw_axes(Canvas& canvas, Font& font, const Figure& figure, const PlotArea& area) {
+  const Rgb& ink = kInk;
+  const Rgb grid{225, 225, 225};
+  const Axis& x_axis = area.x_axis;
+  const Axis& y_axis = area.y_axis;
+  const int left = area.left, right = area.right, top = area.top, bottom = area.bottom;
+  auto to_px = [&](double x, double y) { return area.to_px(x, y); };
   font.size(15);
   for (double t : ticks(x_axis)) {
     const double px = to_px(t, y_axis.min).first;
@@ -108,7 +103,12 @@ Image render(const Figure& figure) {
     font.size(20);
     font.draw(canvas, figure.title, (left + right) / 2.0 - font.width(figure.title) / 2, 35, ink);
   }
+}
 
+// Each series: its line, then its markers with their labels.
+void draw_series(Canvas& canvas, Font& font, const Figure& figure, const PlotArea& area) {
+  const Rgb& ink = kInk;
+  auto to_px = [&](double x, double y) { return area.to_px(x, y); };
   font.size(12);
   for (const auto& s : figure.series) {
     for (std::size_t i = 0; s.line && i + 1 < s.points.size(); ++i) {
@@ -122,8 +122,12 @@ Image render(const Figure& figure) {
       if (!p.label.empty()) font.draw(canvas, p.label, px + s.marker_px / 2 + 3, py - 3, ink);
     }
   }
+}
 
-  // Legend, top right.
+// Legend, top right: the named series.
+void draw_legend(Canvas& canvas, Font& font, const Figure& figure, const PlotArea& area) {
+  const Rgb& ink = kInk;
+  const int right = area.right, top = area.top;
   std::vector<const Series*> listed;
   for (const auto& s : figure.series) {
     if (!s.name.empty()) listed.push_back(&s);
@@ -141,6 +145,28 @@ Image render(const Figure& figure) {
       font.draw(canvas, listed[i]->name, x0 + 36, cy + 5, ink);
     }
   }
+}
+
+}  // namespace
+
+Image render(const Figure& figure) {
+  std::vector<double> xs, ys;
+  for (const auto& s : figure.series) {
+    for (const auto& p : s.points) {
+      xs.push_back(p.x);
+      ys.push_back(p.y);
+    }
+  }
+  const Axis x_axis = fitted(figure.x, xs), y_axis = fitted(figure.y, ys);
+
+  Image image(figure.width, figure.height);
+  std::fill(image.rgb.begin(), image.rgb.end(), std::uint8_t{255});
+  Canvas canvas(image);
+  Font font;
+  const PlotArea area{x_axis, y_axis, 95, figure.width - 30, figure.title.empty() ? 30 : 60, figure.height - 75};
+  draw_axes(canvas, font, figure, area);
+  draw_series(canvas, font, figure, area);
+  draw_legend(canvas, font, figure, area);
   return image;
 }
 

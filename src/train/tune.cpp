@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <sstream>
 
@@ -110,46 +111,33 @@ bool is_locked(const scene::Target& target, const std::string& region, const std
   return false;
 }
 
-OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const TuneSettings& settings) {
-  const auto started = std::chrono::steady_clock::now();
-  const scene::Organ& organ = scene.organs[organ_index];
+namespace {
+
+// Which regions' drives are trained: not pinned, and not every drive parameter locked.
+std::vector<int> trained_regions(const scene::Organ& organ, std::vector<bool>& drive_trained) {
   const scene::Target& t = organ.target;
-  auto log = [&](const std::string& line) {
-    if (settings.log) settings.log(organ.name + ": " + line);
-  };
-  const Problem problem = make_problem(scene, organ_index);
-
-  OrganTuning out;
-  out.organ = organ.name;
-  out.target_size = problem.target_size;
-  out.measure_start_s = problem.measure_start_s() + problem.dt_s;
-  out.target_motion_m = problem.target_motion_m;
-  out.target_motion_pct_of_diagonal = 100.0 * problem.target_motion_m / problem.model.rest_extent_m;
-  out.dt_s = problem.dt_s;
-  out.rate_hz = problem.rate_hz;
-
-  // Which regions' drives are trained: not pinned, and not every drive parameter locked.
   std::vector<int> fitted_regions;
-  out.drive_trained.assign(organ.regions.size(), false);
+  drive_trained.assign(organ.regions.size(), false);
   for (std::size_t r = 0; r < organ.regions.size(); ++r) {
     const scene::Region& region = organ.regions[r];
     const bool all_locked = is_locked(t, region.name, "amplitude") && is_locked(t, region.name, "shape") &&
                             is_locked(t, region.name, "delay");
     if (region.pinned || all_locked) continue;
-    out.drive_trained[r] = true;
+    drive_trained[r] = true;
     fitted_regions.push_back(static_cast<int>(r));
   }
+  return fitted_regions;
+}
 
-  out.written = play(problem, problem.model);
-  log("as written: " + format_error(out.written));
-
-  // Signals from forces, fitted as Fourier series.
-  const RecordedSignals recorded = record_coupled(problem, problem.model, t.coupling_N_per_m, fitted_regions);
-  out.mean_coupling_force_N = recorded.mean_coupling_force_N;
+// The regions with each trained drive fitted as a Fourier series to the recorded signal,
+// locked parameters kept as written: CMA-ES's starting point.
+std::vector<scene::Region> fitted_regions(const scene::Organ& organ, const RecordedSignals& recorded,
+                                          const std::vector<bool>& drive_trained) {
+  const scene::Target& t = organ.target;
   std::vector<scene::Region> start = organ.regions;
   for (std::size_t r = 0; r < start.size(); ++r) {
     scene::Drive& d = start[r].drive;
-    if (!out.drive_trained[r]) {
+    if (!drive_trained[r]) {
       if (d.waveform != scene::Waveform::kNone && !start[r].pinned) d.rate_hz = t.rate_hz, d.rate_end_hz = 0;
       continue;
     }
@@ -166,16 +154,19 @@ OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const
     d.delay_s = is_locked(t, start[r].name, "delay") ? written.delay_s : fit.delay_s;
     if (d.waveform == scene::Waveform::kFourier && d.harmonics.empty()) d.harmonics = fit.harmonics;
   }
-  out.fitted = start;
-  out.before = play(problem, with_regions(problem.model, start));
-  log("fitted (untuned): " + format_error(out.before) + "; mean coupling force " + std::to_string(recorded.mean_coupling_force_N) + " N");
+  return start;
+}
 
-  out.parameters = free_parameters(organ, start, out.drive_trained);
-  Eigen::VectorXd y0(static_cast<Eigen::Index>(out.parameters.size()));
-  for (std::size_t i = 0; i < out.parameters.size(); ++i) y0[static_cast<Eigen::Index>(i)] = coordinate_of(out.parameters[i], read(start, out.parameters[i]));
+// CMA-ES over the free parameters from the fitted start, each playback scored by its RMS
+// error, every generation logged.
+CmaesResult search(const Problem& problem, const scene::Target& t, const std::vector<scene::Region>& start,
+                   const std::vector<Parameter>& parameters, const TuneSettings& settings,
+                   const std::function<void(const std::string&)>& log) {
+  Eigen::VectorXd y0(static_cast<Eigen::Index>(parameters.size()));
+  for (std::size_t i = 0; i < parameters.size(); ++i) y0[static_cast<Eigen::Index>(i)] = coordinate_of(parameters[i], read(start, parameters[i]));
 
   auto objective = [&](const Eigen::VectorXd& y) {
-    const PlaybackError e = play(problem, with_regions(problem.model, decode(start, out.parameters, y)));
+    const PlaybackError e = play(problem, with_regions(problem.model, decode(start, parameters, y)));
     return e.diverged ? 1e6 : e.rms_pct_of_diagonal;  // The same optimum as % of motion (playback.h).
   };
   CmaesSettings cma;
@@ -183,12 +174,48 @@ OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const
   cma.max_evaluations = settings.budget >= 0 ? settings.budget : t.budget;
   cma.seed = settings.seed;
   cma.threads = settings.threads;
-  const CmaesResult best = minimize_cmaes(objective, y0, cma, [&](const CmaesGeneration& g) {
+  return minimize_cmaes(objective, y0, cma, [&](const CmaesGeneration& g) {
     std::ostringstream s;
     s.precision(4);
     s << "generation " << g.generation << ", " << g.evaluations << " playbacks: best RMS " << g.best << " %";
     log(s.str());
   });
+}
+
+}  // namespace
+
+OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const TuneSettings& settings) {
+  const auto started = std::chrono::steady_clock::now();
+  const scene::Organ& organ = scene.organs[organ_index];
+  const scene::Target& t = organ.target;
+  const std::function<void(const std::string&)> log = [&](const std::string& line) {
+    if (settings.log) settings.log(organ.name + ": " + line);
+  };
+  const Problem problem = make_problem(scene, organ_index);
+
+  OrganTuning out;
+  out.organ = organ.name;
+  out.target_size = problem.target_size;
+  out.measure_start_s = problem.measure_start_s() + problem.dt_s;
+  out.target_motion_m = problem.target_motion_m;
+  out.target_motion_pct_of_diagonal = 100.0 * problem.target_motion_m / problem.model.rest_extent_m;
+  out.dt_s = problem.dt_s;
+  out.rate_hz = problem.rate_hz;
+  const std::vector<int> fitted = trained_regions(organ, out.drive_trained);
+
+  out.written = play(problem, problem.model);
+  log("as written: " + format_error(out.written));
+
+  // Signals from forces, fitted as Fourier series.
+  const RecordedSignals recorded = record_coupled(problem, problem.model, t.coupling_N_per_m, fitted);
+  out.mean_coupling_force_N = recorded.mean_coupling_force_N;
+  const std::vector<scene::Region> start = fitted_regions(organ, recorded, out.drive_trained);
+  out.fitted = start;
+  out.before = play(problem, with_regions(problem.model, start));
+  log("fitted (untuned): " + format_error(out.before) + "; mean coupling force " + std::to_string(recorded.mean_coupling_force_N) + " N");
+
+  out.parameters = free_parameters(organ, start, out.drive_trained);
+  const CmaesResult best = search(problem, t, start, out.parameters, settings, log);
   out.regions = decode(start, out.parameters, best.best_x);
   out.after = play(problem, with_regions(problem.model, out.regions));
   out.generations = best.generations;
