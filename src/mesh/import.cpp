@@ -158,6 +158,43 @@ std::size_t ply_min_bytes(const std::string& type, bool ascii) {
   return 4;
 }
 
+// The least number of bytes the body of a PLY header's elements needs, and whether the
+// body is ASCII: the guard against headers promising more than the file holds.
+double ply_body_bytes(const std::string& header_text, bool& ascii) {
+  std::istringstream header(header_text);
+  ascii = false;
+  double min_body_bytes = 0, count = 0, element_bytes = 0;  // double: counts may be absurd
+  for (std::string line, word; std::getline(header, line);) {
+    std::istringstream words(line);
+    words >> word;
+    if (word == "format") {
+      words >> word;
+      ascii = word == "ascii";
+    } else if (word == "element") {
+      min_body_bytes += count * element_bytes;
+      words >> word >> count;
+      element_bytes = 0;
+    } else if (word == "property") {
+      words >> word;
+      if (word == "list") words >> word;  // the count's type: an empty list is just the count
+      element_bytes += static_cast<double>(ply_min_bytes(word, ascii));
+    }
+  }
+  min_body_bytes += count * element_bytes;
+  return min_body_bytes;
+}
+
+// A NUL byte in an ASCII PLY (right after end_header, fuzz_mesh found) sends assimp's
+// reader into an endless loop; ASCII PLY never holds one.
+void check_no_nul(const std::filesystem::path& file) {
+  std::ifstream whole(file, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
+  if (const std::size_t at = bytes.find('\0'); at != std::string::npos) {
+    throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (ASCII PLY with a NUL byte at offset " +
+                                          std::to_string(at) + ")");
+  }
+}
+
 // PLY files assimp 5.2 mishandles are refused before it sees them (found by
 // fuzz_mesh and the invalid-input tests; fuzz/regressions/mesh/): without `end_header` its
 // reader never returns, and a claim of 10 million vertices in a 200-byte file makes it
@@ -184,36 +221,9 @@ void check_ply_header(const std::filesystem::path& file) {
   if (end == std::string::npos) {
     throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (PLY header without an end_header line)");
   }
-  std::istringstream header(head.substr(0, end));
   bool ascii = false;
-  double min_body_bytes = 0, count = 0, element_bytes = 0;  // double: counts may be absurd
-  for (std::string line, word; std::getline(header, line);) {
-    std::istringstream words(line);
-    words >> word;
-    if (word == "format") {
-      words >> word;
-      ascii = word == "ascii";
-    } else if (word == "element") {
-      min_body_bytes += count * element_bytes;
-      words >> word >> count;
-      element_bytes = 0;
-    } else if (word == "property") {
-      words >> word;
-      if (word == "list") words >> word;  // the count's type: an empty list is just the count
-      element_bytes += static_cast<double>(ply_min_bytes(word, ascii));
-    }
-  }
-  min_body_bytes += count * element_bytes;
-  // A NUL byte in an ASCII PLY (right after end_header, fuzz_mesh found) sends assimp's
-  // reader into an endless loop; ASCII PLY never holds one.
-  if (ascii) {
-    std::ifstream whole(file, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
-    if (const std::size_t at = bytes.find('\0'); at != std::string::npos) {
-      throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (ASCII PLY with a NUL byte at offset " +
-                                            std::to_string(at) + ")");
-    }
-  }
+  const double min_body_bytes = ply_body_bytes(head.substr(0, end), ascii);
+  if (ascii) check_no_nul(file);
   std::error_code ec;
   const double file_bytes = static_cast<double>(std::filesystem::file_size(file, ec));
   if (min_body_bytes > file_bytes) {
@@ -297,12 +307,11 @@ void check_mesh_file(const std::filesystem::path& file) {
   check_glb_header(file);
 }
 
-OrganMesh import_mesh(const std::filesystem::path& file) {
-  check_mesh_file(file);
+namespace {
 
-  Assimp::Importer importer;  // No logger is created, so assimp prints nothing.
-  // Node transforms are baked into the vertices, but meshes stay separate (not merged by
-  // material) so each keeps its name as a part.
+// Reads the file with assimp: node transforms baked into the vertices, but meshes kept
+// separate (not merged by material) so each keeps its name as a part.
+const aiScene* read_scene(Assimp::Importer& importer, const std::filesystem::path& file) {
   importer.SetPropertyInteger(AI_CONFIG_PP_PTV_KEEP_HIERARCHY, 1);
   // Points and lines are split off by SortByPType and then skipped below.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, 0);
@@ -313,12 +322,21 @@ OrganMesh import_mesh(const std::filesystem::path& file) {
     throw Error(ExitCode::kDataError,
                 file.string() + ": cannot read as a mesh (assimp: " + importer.GetErrorString() + ")");
   }
+  return scene;
+}
 
-  OrganMesh mesh;
-  TriangleMesh& surface = mesh.surface;
-  FileParts parts(mesh);
-  std::map<std::string, std::vector<unsigned>> primitives;  // Base name -> its meshes.
+// Base names shared by several primitives, and material names, each with its meshes.
+struct SharedNames {
+  std::map<std::string, std::vector<unsigned>> primitives;
   std::map<std::string, std::vector<unsigned>> materials;
+};
+
+// Appends every triangle mesh of the scene to the surface, in assimp's order, each a part.
+SharedNames append_meshes(const aiScene* scene, const std::filesystem::path& file, TriangleMesh& surface,
+                          FileParts& parts) {
+  SharedNames shared_names;
+  std::map<std::string, std::vector<unsigned>>& primitives = shared_names.primitives;
+  std::map<std::string, std::vector<unsigned>>& materials = shared_names.materials;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     const aiMesh* source = scene->mMeshes[m];
     if (source == nullptr || !(source->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
@@ -356,12 +374,27 @@ OrganMesh import_mesh(const std::filesystem::path& file) {
       surface.triangles.push_back(triangle);
     }
   }
+  return shared_names;
+}
+
+}  // namespace
+
+OrganMesh import_mesh(const std::filesystem::path& file) {
+  check_mesh_file(file);
+
+  Assimp::Importer importer;  // No logger is created, so assimp prints nothing.
+  const aiScene* scene = read_scene(importer, file);
+
+  OrganMesh mesh;
+  TriangleMesh& surface = mesh.surface;
+  FileParts parts(mesh);
+  const SharedNames names = append_meshes(scene, file, surface, parts);
   parts.add_nodes(scene->mRootNode);
-  for (const auto& [name, meshes] : primitives) {
+  for (const auto& [name, meshes] : names.primitives) {
     if (meshes.size() > 1) parts.add_name(name, meshes);  // Two or more primitives of one mesh.
   }
   // assimp names a material it made up itself "DefaultMaterial": not the author's name.
-  for (const auto& [name, meshes] : materials) {
+  for (const auto& [name, meshes] : names.materials) {
     if (name != AI_DEFAULT_MATERIAL_NAME) parts.add_name(name, meshes);
   }
   mesh.normalize_membership();

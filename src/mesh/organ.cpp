@@ -141,53 +141,45 @@ void check_organ_size(const OrganMesh& mesh, const scene::Organ& organ, const st
                                         " across, but an organ is 5 mm to 2 m across, so its units are wrong; " + fit);
 }
 
-}  // namespace
-
-std::vector<int> assign_regions(const OrganMesh& mesh, const std::vector<scene::Region>& regions) {
+// The vertices one region's selectors choose (any of them); a part that is missing or
+// has no triangle fails with the region's name.
+std::vector<char> chosen_by(const OrganMesh& mesh, const scene::Region& region) {
   const std::vector<Eigen::Vector3d>& positions = mesh.surface.positions;
-  std::vector<int> vertex_region(positions.size(), -1);
-  for (size_t r = 0; r < regions.size(); ++r) {
-    const scene::Region& region = regions[r];
-    // An empty selection means the part named like the region.
-    std::vector<scene::Selector> select = region.select;
-    if (select.empty()) {
-      scene::Selector by_name;
-      by_name.kind = scene::SelectorKind::kPart;
-      by_name.part = region.name;
-      by_name.origin = region.origin;
-      select.push_back(by_name);
-    }
-    std::vector<char> chosen(positions.size(), 0);
-    for (const scene::Selector& selector : select) {
-      std::vector<char> in_part;
-      if (selector.kind == scene::SelectorKind::kPart) {
-        const int part = mesh.part_index(selector.part);
-        if (part < 0) {
-          throw Error(ExitCode::kDataError, where(selector.origin) + "region '" + region.name + "': the mesh has no part '" +
-                                                selector.part + "' (" + part_list(mesh) + ")");
-        }
-        in_part = mesh.part_mask(part);
-        if (std::find(in_part.begin(), in_part.end(), 1) == in_part.end()) {
-          throw Error(ExitCode::kDataError, where(selector.origin) + "region '" + region.name + "': the mesh's part '" +
-                                                selector.part + "' has no triangle (only points or lines, which are "
-                                                "not read): select another part");
-        }
+  // An empty selection means the part named like the region.
+  std::vector<scene::Selector> select = region.select;
+  if (select.empty()) {
+    scene::Selector by_name;
+    by_name.kind = scene::SelectorKind::kPart;
+    by_name.part = region.name;
+    by_name.origin = region.origin;
+    select.push_back(by_name);
+  }
+  std::vector<char> chosen(positions.size(), 0);
+  for (const scene::Selector& selector : select) {
+    std::vector<char> in_part;
+    if (selector.kind == scene::SelectorKind::kPart) {
+      const int part = mesh.part_index(selector.part);
+      if (part < 0) {
+        throw Error(ExitCode::kDataError, where(selector.origin) + "region '" + region.name + "': the mesh has no part '" +
+                                              selector.part + "' (" + part_list(mesh) + ")");
       }
-      for (size_t v = 0; v < positions.size(); ++v) {
-        chosen[v] |= selects(selector, !in_part.empty() && in_part[v], positions[v]);
+      in_part = mesh.part_mask(part);
+      if (std::find(in_part.begin(), in_part.end(), 1) == in_part.end()) {
+        throw Error(ExitCode::kDataError, where(selector.origin) + "region '" + region.name + "': the mesh's part '" +
+                                              selector.part + "' has no triangle (only points or lines, which are "
+                                              "not read): select another part");
       }
     }
-    int count = 0;
     for (size_t v = 0; v < positions.size(); ++v) {
-      if (chosen[v]) vertex_region[v] = static_cast<int>(r), ++count;
-    }
-    if (count == 0) {
-      throw Error(ExitCode::kDataError, where(region.origin) + "region '" + region.name +
-                                            "' selects no vertex of the organ (selectors act on world positions, in metres)");
+      chosen[v] |= selects(selector, !in_part.empty() && in_part[v], positions[v]);
     }
   }
-  // A vertex belongs to the last region that selects it, so a later region can take every
-  // vertex of an earlier one: that region, and its drive, would silently do nothing.
+  return chosen;
+}
+
+// A vertex belongs to the last region that selects it, so a later region can take every
+// vertex of an earlier one: that region, and its drive, would silently do nothing.
+void check_every_region_keeps(const std::vector<int>& vertex_region, const std::vector<scene::Region>& regions) {
   std::vector<int> kept(regions.size(), 0);
   for (const int r : vertex_region) {
     if (r >= 0) ++kept[static_cast<size_t>(r)];
@@ -203,6 +195,26 @@ std::vector<int> assign_regions(const OrganMesh& mesh, const std::vector<scene::
                     "also selected by a later region (" + taker + "), and a vertex belongs to the last region that " +
                     "selects it; narrow the later region's selectors, or list '" + regions[r].name + "' after it");
   }
+}
+
+}  // namespace
+
+std::vector<int> assign_regions(const OrganMesh& mesh, const std::vector<scene::Region>& regions) {
+  const std::vector<Eigen::Vector3d>& positions = mesh.surface.positions;
+  std::vector<int> vertex_region(positions.size(), -1);
+  for (size_t r = 0; r < regions.size(); ++r) {
+    const scene::Region& region = regions[r];
+    const std::vector<char> chosen = chosen_by(mesh, region);
+    int count = 0;
+    for (size_t v = 0; v < positions.size(); ++v) {
+      if (chosen[v]) vertex_region[v] = static_cast<int>(r), ++count;
+    }
+    if (count == 0) {
+      throw Error(ExitCode::kDataError, where(region.origin) + "region '" + region.name +
+                                            "' selects no vertex of the organ (selectors act on world positions, in metres)");
+    }
+  }
+  check_every_region_keeps(vertex_region, regions);
   return vertex_region;
 }
 
