@@ -10,13 +10,17 @@
 namespace systole::scene::schema {
 namespace {
 
-ValueSpec<Selector> selector_map() {
-  auto sphere = map<Selector>({
+// The shapes a selector may name, one field table each.
+ValueSpec<Selector> sphere_spec() {
+  return map<Selector>({
       field("center", vec3(Dimension::kLength), &Selector::center,
             "Centre, in organ space (after units and centring)."),
       field("radius", quantity(Dimension::kLength, open_closed(0, 1000)), &Selector::radius_m, "Radius.").required(),
   });
-  auto box = map<Selector>(
+}
+
+ValueSpec<Selector> box_spec() {
+  return map<Selector>(
       {
           field("min", vec3(Dimension::kLength), &Selector::min, "Lowest corner, in organ space.").required(),
           field("max", vec3(Dimension::kLength), &Selector::max, "Highest corner, in organ space.").required(),
@@ -25,13 +29,22 @@ ValueSpec<Selector> selector_map() {
         if ((s.min.array() > s.max.array()).any())
           fail(origin_of(node, "max"), join(path, "max"), "every coordinate of max must be >= that of min");
       });
-  auto half_space = map<Selector>(
+}
+
+ValueSpec<Selector> half_space_spec() {
+  return map<Selector>(
       {
           field("point", vec3(Dimension::kLength), &Selector::point, "A point on the boundary plane."),
           field("normal", direction(), &Selector::normal, "Points into the selected side (normalised on reading).")
               .required(),
       },
       [](const Node&, Selector& s, const std::string&, const Context&) { s.normal.normalize(); });
+}
+
+ValueSpec<Selector> selector_map() {
+  auto sphere = sphere_spec();
+  auto box = box_spec();
+  auto half_space = half_space_spec();
 
   return map<Selector>(
       {

@@ -200,14 +200,11 @@ ValueSpec<Output> output_spec() {
       });
 }
 
-/// output.loop: duration becomes the shortest whole number of cycles of the slowest drive
-/// in which every other drive also completes whole cycles (within 0.1% of a cycle), times
-/// round(duration / that); start_frame skips settle_cycles of the slowest drive, rounded up to
-/// whole loops, so the clip starts at the same phase as t = 0.
-void resolve_loop(const Node& node, Scene& s) {
-  Output& o = s.output;
-  const Node* output_node = node.find("output");
-  const Origin& where = output_node ? origin_of(*output_node, "loop") : node.origin;
+namespace {
+
+// Every rhythm the loop must repeat, with where it is written; a prescribed motion or a
+// one-off poke cannot repeat, so either fails here.
+std::vector<Rhythm> loop_rhythms(const Scene& s) {
   std::vector<Rhythm> rhythms;
   for (std::size_t i = 0; i < s.organs.size(); ++i) {
     const Organ& organ = s.organs[i];
@@ -235,6 +232,20 @@ void resolve_loop(const Node& node, Scene& s) {
            "happens once, so output.loop cannot repeat it seamlessly; drop the loop or give the poke a drive");
     }
   }
+  return rhythms;
+}
+
+}  // namespace
+
+/// output.loop: duration becomes the shortest whole number of cycles of the slowest drive
+/// in which every other drive also completes whole cycles (within 0.1% of a cycle), times
+/// round(duration / that); start_frame skips settle_cycles of the slowest drive, rounded up to
+/// whole loops, so the clip starts at the same phase as t = 0.
+void resolve_loop(const Node& node, Scene& s) {
+  Output& o = s.output;
+  const Node* output_node = node.find("output");
+  const Origin& where = output_node ? origin_of(*output_node, "loop") : node.origin;
+  const std::vector<Rhythm> rhythms = loop_rhythms(s);
   if (rhythms.empty()) fail(where, "output.loop", "no region is driven, so there is no cycle to loop on");
   const Rhythm* slowest = &rhythms[0];
   for (const Rhythm& r : rhythms) {
