@@ -103,6 +103,35 @@ double largest_motion_m(const Workspace::PerBody& pb) {
 /// surfaces were apart: a vertex that crossed a thin body (the diaphragm) within the step is
 /// still pushed back to the side it came from, never through (speculative contacts, as
 /// Catto's, with the step's own motion as the margin).
+// The triangle of body b nearest p within sqrt(r2) (its index, or -1), with the closest
+// point on it and the squared distance; of equals, the lowest triangle.
+int nearest_triangle(const Eigen::Vector3d& p, const Workspace::PerBody& pb, const std::vector<Eigen::Vector3i>& tris,
+                     double r2, ClosestPoint& best_point, double& best) {
+  const auto [first, last] = pb.grid.candidates(p);
+  best = std::numeric_limits<double>::infinity();
+  int best_triangle = -1;
+  double limit = r2;
+  for (const int* t = first; t != last; ++t) {
+    // The triangle's box first: most candidates of a cell are farther than the reach or
+    // than the best so far, and the box says so for a few comparisons.
+    const Eigen::Vector3d outside =
+        (pb.box_lower.col(*t) - p).cwiseMax(p - pb.box_upper.col(*t)).cwiseMax(0.0);
+    if (outside.squaredNorm() > limit) continue;
+    const Eigen::Vector3i& tri = tris[*t];
+    const ClosestPoint cp = closest_on_triangle(p, pb.start.col(tri[0]), pb.start.col(tri[1]), pb.start.col(tri[2]));
+    const Eigen::Vector3d q =
+        cp.bary[0] * pb.start.col(tri[0]) + cp.bary[1] * pb.start.col(tri[1]) + cp.bary[2] * pb.start.col(tri[2]);
+    const double d2 = (p - q).squaredNorm();
+    if (d2 < best) {  // Strict: of equals, the lowest triangle (candidates ascend).
+      best = d2;
+      limit = std::min(limit, d2);
+      best_point = cp;
+      best_triangle = *t;
+    }
+  }
+  return best_triangle;
+}
+
 void detect(const std::vector<Body>& bodies, const PairParams& pair, int a, int b, double radius_m, int threads,
             Workspace& work) {
   const Workspace::PerBody& pa = work.bodies[a];
@@ -117,29 +146,9 @@ void detect(const std::vector<Body>& bodies, const PairParams& pair, int a, int 
     slot.triangle = -1;
     const Eigen::Vector3d p = pa.start.col(i);
     if (!pb.grid.near(p)) continue;
-    const auto [first, last] = pb.grid.candidates(p);
-    double best = std::numeric_limits<double>::infinity();
+    double best = 0;
     ClosestPoint best_point;
-    int best_triangle = -1;
-    double limit = r2;
-    for (const int* t = first; t != last; ++t) {
-      // The triangle's box first: most candidates of a cell are farther than the reach or
-      // than the best so far, and the box says so for a few comparisons.
-      const Eigen::Vector3d outside =
-          (pb.box_lower.col(*t) - p).cwiseMax(p - pb.box_upper.col(*t)).cwiseMax(0.0);
-      if (outside.squaredNorm() > limit) continue;
-      const Eigen::Vector3i& tri = tris[*t];
-      const ClosestPoint cp = closest_on_triangle(p, pb.start.col(tri[0]), pb.start.col(tri[1]), pb.start.col(tri[2]));
-      const Eigen::Vector3d q =
-          cp.bary[0] * pb.start.col(tri[0]) + cp.bary[1] * pb.start.col(tri[1]) + cp.bary[2] * pb.start.col(tri[2]);
-      const double d2 = (p - q).squaredNorm();
-      if (d2 < best) {  // Strict: of equals, the lowest triangle (candidates ascend).
-        best = d2;
-        limit = std::min(limit, d2);
-        best_point = cp;
-        best_triangle = *t;
-      }
-    }
+    const int best_triangle = nearest_triangle(p, pb, tris, r2, best_point, best);
     if (best_triangle < 0 || best > r2) continue;
     const Eigen::Vector3i& tri = tris[best_triangle];
     if (pa.vertex_inverse_mass[i] == 0 && pb.vertex_inverse_mass[tri[0]] == 0 && pb.vertex_inverse_mass[tri[1]] == 0 &&
@@ -303,6 +312,34 @@ void begin_step(const std::vector<Body>& bodies, Workspace& work) {
   for (std::size_t b = 0; b < bodies.size(); ++b) surface_positions(bodies[b], work.bodies[b].start);
 }
 
+namespace {
+
+// Normals and boxes now; the grid only when the surface has moved more since it was
+// built than its spare reach covers (fat boxes: a triangle that moved m since is within
+// reach of p now only if it was within reach + m then). A static collider's is built once.
+void refresh_grids(const std::vector<Body>& bodies, const std::vector<double>& reach, Workspace& work) {
+  const int count = static_cast<int>(bodies.size());
+  for (int b = 0; b < count; ++b) {
+    if (reach[b] == 0) continue;
+    Workspace::PerBody& pb = work.bodies[b];
+    if (bodies[b].movable || pb.face_normal.cols() == 0) {
+      pseudo_normals(pb.start, *bodies[b].triangles, pb.face_normal, pb.vertex_normal);
+      triangle_boxes(pb.start, *bodies[b].triangles, pb.box_lower, pb.box_upper);
+    }
+    const double moved = pb.start.cols() > 0 && pb.built_at.cols() == pb.start.cols() ? (pb.start - pb.built_at).colwise().norm().maxCoeff()
+                                                                : std::numeric_limits<double>::infinity();
+    if (reach[b] + moved <= pb.grid_reach_m) continue;
+    const double built_reach = reach[b] + std::max(reach[b], pb.mean_edge_m);
+    // Cells 1.5 times the reach or the mean edge: a triangle lands in a few cells, a cell
+    // holds a few triangles.
+    pb.grid.build(pb.start, *bodies[b].triangles, 1.5 * std::max(built_reach, pb.mean_edge_m), built_reach);
+    pb.grid_reach_m = built_reach;
+    pb.built_at = pb.start;
+  }
+}
+
+}  // namespace
+
 void resolve(const Params& params, std::vector<Body>& bodies, double dt_s, Workspace& work) {
   prepare(bodies, work);
   const int count = static_cast<int>(bodies.size());
@@ -321,26 +358,7 @@ void resolve(const Params& params, std::vector<Body>& bodies, double dt_s, Works
     reach[p.body_a] = std::max(reach[p.body_a], radius(p));
     reach[p.body_b] = std::max(reach[p.body_b], radius(p));
   }
-  for (int b = 0; b < count; ++b) {
-    if (reach[b] == 0) continue;
-    Workspace::PerBody& pb = work.bodies[b];
-    // Normals and boxes now; the grid only when the surface has moved more since it was
-    // built than its spare reach covers (fat boxes: a triangle that moved m since is within
-    // reach of p now only if it was within reach + m then). A static collider's is built once.
-    if (bodies[b].movable || pb.face_normal.cols() == 0) {
-      pseudo_normals(pb.start, *bodies[b].triangles, pb.face_normal, pb.vertex_normal);
-      triangle_boxes(pb.start, *bodies[b].triangles, pb.box_lower, pb.box_upper);
-    }
-    const double moved = pb.start.cols() > 0 && pb.built_at.cols() == pb.start.cols() ? (pb.start - pb.built_at).colwise().norm().maxCoeff()
-                                                                : std::numeric_limits<double>::infinity();
-    if (reach[b] + moved <= pb.grid_reach_m) continue;
-    const double built_reach = reach[b] + std::max(reach[b], pb.mean_edge_m);
-    // Cells 1.5 times the reach or the mean edge: a triangle lands in a few cells, a cell
-    // holds a few triangles.
-    pb.grid.build(pb.start, *bodies[b].triangles, 1.5 * std::max(built_reach, pb.mean_edge_m), built_reach);
-    pb.grid_reach_m = built_reach;
-    pb.built_at = pb.start;
-  }
+  refresh_grids(bodies, reach, work);
   work.contacts.clear();
   for (const PairParams& p : params.pairs) {
     detect(bodies, p, p.body_a, p.body_b, radius(p), params.threads, work);

@@ -8,67 +8,49 @@
 
 namespace systole::sim::contact {
 
+namespace {
+
+// One region's answer: the corner weights, the feature and which edge or corner it is.
+ClosestPoint closest_at(const Eigen::Vector3d& bary, Feature feature, int index) {
+  ClosestPoint out;
+  out.bary = bary;
+  out.feature = feature;
+  out.index = index;
+  return out;
+}
+
+}  // namespace
+
 ClosestPoint closest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                  const Eigen::Vector3d& c) {
-  ClosestPoint out;
   const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) {
-    out.bary = {1, 0, 0};
-    out.feature = Feature::kCorner;
-    out.index = 0;
-    return out;
-  }
+  if (d1 <= 0 && d2 <= 0) return closest_at({1, 0, 0}, Feature::kCorner, 0);
   const Eigen::Vector3d bp = p - b;
   const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) {
-    out.bary = {0, 1, 0};
-    out.feature = Feature::kCorner;
-    out.index = 1;
-    return out;
-  }
+  if (d3 >= 0 && d4 <= d3) return closest_at({0, 1, 0}, Feature::kCorner, 1);
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0 && d1 >= 0 && d3 <= 0) {
     const double v = d1 / (d1 - d3);
-    out.bary = {1 - v, v, 0};
-    out.feature = Feature::kEdge;
-    out.index = 0;
-    return out;
+    return closest_at({1 - v, v, 0}, Feature::kEdge, 0);
   }
   const Eigen::Vector3d cp = p - c;
   const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) {
-    out.bary = {0, 0, 1};
-    out.feature = Feature::kCorner;
-    out.index = 2;
-    return out;
-  }
+  if (d6 >= 0 && d5 <= d6) return closest_at({0, 0, 1}, Feature::kCorner, 2);
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0 && d2 >= 0 && d6 <= 0) {
     const double w = d2 / (d2 - d6);
-    out.bary = {1 - w, 0, w};
-    out.feature = Feature::kEdge;
-    out.index = 2;  // Edge c-a: corners 2 and 0.
-    return out;
+    return closest_at({1 - w, 0, w}, Feature::kEdge, 2);  // Edge c-a: corners 2 and 0.
   }
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
     const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    out.bary = {0, 1 - w, w};
-    out.feature = Feature::kEdge;
-    out.index = 1;
-    return out;
+    return closest_at({0, 1 - w, w}, Feature::kEdge, 1);
   }
   const double denom = va + vb + vc;
-  if (!(std::abs(denom) > 0)) {  // A degenerate triangle: its first corner.
-    out.bary = {1, 0, 0};
-    out.feature = Feature::kCorner;
-    return out;
-  }
+  if (!(std::abs(denom) > 0)) return closest_at({1, 0, 0}, Feature::kCorner, 0);  // A degenerate triangle: its first corner.
   const double v = vb / denom, w = vc / denom;
-  out.bary = {1 - v - w, v, w};
-  out.feature = Feature::kFace;
-  return out;
+  return closest_at({1 - v - w, v, w}, Feature::kFace, 0);
 }
 
 std::vector<Eigen::Vector3i> edge_neighbours(const std::vector<Eigen::Vector3i>& triangles, int vertex_count) {
