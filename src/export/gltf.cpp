@@ -112,6 +112,39 @@ int add_material(tinygltf::Model& model, const std::string& name, const scene::C
   return static_cast<int>(model.materials.size()) - 1;
 }
 
+// Each region's triangles as glTF indices, and last the triangles of no region (the body).
+std::vector<std::vector<std::uint32_t>> triangles_by_region(const OrganTrack& organ) {
+  const int regions = static_cast<int>(organ.region_names.size());
+  std::vector<std::vector<std::uint32_t>> groups(static_cast<std::size_t>(regions) + 1);
+  for (const auto& t : organ.triangles) {
+    const int r = triangle_region(organ, t);
+    auto& g = groups[static_cast<std::size_t>(r < 0 ? regions : r)];
+    for (int k = 0; k < 3; ++k) g.push_back(static_cast<std::uint32_t>(t[k]));
+  }
+  return groups;
+}
+
+// Weights key by key, every target's at each key (the layout glTF asks of weight outputs),
+// played on the morph targets of the last node added.
+void add_weights_channel(tinygltf::Model& model, BufferBuilder& buffers, const MorphAnimation& morph, int time_accessor,
+                         tinygltf::Animation& animation) {
+  std::vector<float> weights;
+  weights.reserve(static_cast<std::size_t>(morph.weights.size()));
+  for (Eigen::Index key = 0; key < morph.weights.rows(); ++key) {
+    for (Eigen::Index k = 0; k < morph.weights.cols(); ++k) weights.push_back(morph.weights(key, k));
+  }
+  tinygltf::AnimationSampler sampler;
+  sampler.input = time_accessor;
+  sampler.output = buffers.scalars(weights, false);
+  sampler.interpolation = "LINEAR";
+  animation.samplers.push_back(sampler);
+  tinygltf::AnimationChannel channel;
+  channel.sampler = static_cast<int>(animation.samplers.size()) - 1;
+  channel.target_node = static_cast<int>(model.nodes.size()) - 1;
+  channel.target_path = "weights";
+  animation.channels.push_back(channel);
+}
+
 void add_organ(tinygltf::Model& model, BufferBuilder& buffers, const OrganTrack& organ, const MorphAnimation& morph,
                int time_accessor, tinygltf::Animation& animation) {
   tinygltf::Mesh mesh;
@@ -127,12 +160,7 @@ void add_organ(tinygltf::Model& model, BufferBuilder& buffers, const OrganTrack&
   }
   // Primitives by region: every one shares the vertices and the targets.
   const int regions = static_cast<int>(organ.region_names.size());
-  std::vector<std::vector<std::uint32_t>> groups(static_cast<std::size_t>(regions) + 1);
-  for (const auto& t : organ.triangles) {
-    const int r = triangle_region(organ, t);
-    auto& g = groups[static_cast<std::size_t>(r < 0 ? regions : r)];
-    for (int k = 0; k < 3; ++k) g.push_back(static_cast<std::uint32_t>(t[k]));
-  }
+  const std::vector<std::vector<std::uint32_t>> groups = triangles_by_region(organ);
   for (int r = 0; r <= regions; ++r) {
     const auto& g = groups[static_cast<std::size_t>(r)];
     if (g.empty()) continue;
@@ -162,22 +190,7 @@ void add_organ(tinygltf::Model& model, BufferBuilder& buffers, const OrganTrack&
   model.scenes.front().nodes.push_back(static_cast<int>(model.nodes.size()) - 1);
 
   if (morph.target_count() == 0) return;  // Nothing moves: no curve to play.
-  // Weights key by key, every target's at each key (the layout glTF asks of weight outputs).
-  std::vector<float> weights;
-  weights.reserve(static_cast<std::size_t>(morph.weights.size()));
-  for (Eigen::Index key = 0; key < morph.weights.rows(); ++key) {
-    for (Eigen::Index k = 0; k < morph.weights.cols(); ++k) weights.push_back(morph.weights(key, k));
-  }
-  tinygltf::AnimationSampler sampler;
-  sampler.input = time_accessor;
-  sampler.output = buffers.scalars(weights, false);
-  sampler.interpolation = "LINEAR";
-  animation.samplers.push_back(sampler);
-  tinygltf::AnimationChannel channel;
-  channel.sampler = static_cast<int>(animation.samplers.size()) - 1;
-  channel.target_node = static_cast<int>(model.nodes.size()) - 1;
-  channel.target_path = "weights";
-  animation.channels.push_back(channel);
+  add_weights_channel(model, buffers, morph, time_accessor, animation);
 }
 
 }  // namespace
