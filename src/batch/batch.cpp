@@ -17,7 +17,7 @@
 #include <thread>
 
 #include "batch/manifest.h"
-#include "clip/bake.h"
+#include "world/bake.h"
 #include "clip/frame_list.h"
 #include "clip/video_format.h"
 #include "common/atomic_output.h"
@@ -314,7 +314,7 @@ JobResult run_job(const Job& job, const BatchOptions& options) {
     const clip::RenderRequest request = plan_request(job, scene, options);
     result.output = (request.video.empty() ? request.png_dir : request.video).string();
     JobIdentity identity{job.scene.string(), scene::scene_content_hash(scene), job.overrides, options.frames, 0};
-    if (!options.from_bake.empty()) identity.bake_checksum = clip::BakeReader(options.from_bake).checksum();
+    if (!options.from_bake.empty()) identity.bake_checksum = world::BakeReader(options.from_bake).checksum();
     const std::string who = options.several ? job.name + ": " : "";
     // Leftovers of a run that died (SIGKILL, a lost node) go even when this job is skipped.
     if (!request.video.empty()) sweep_stale_outputs(request.video.has_parent_path() ? request.video.parent_path() : ".");

@@ -8,7 +8,7 @@
 #include "scene/load.h"
 #include "study/physiology.h"
 #include "study/summary.h"
-#include "world/world.h"
+#include "world/frame_source.h"
 
 namespace systole::cli {
 
@@ -43,7 +43,8 @@ Command add_validate_command(CLI::App& app) {
             // The limits `render` would apply to the default video, so a scene that passes here renders.
             const auto limits = o->allow_large ? clip::Limits::none() : clip::Limits{};
             clip::check_scene_limits(scene, {scene.output.frame_count(), true, false}, limits);
-            const auto world = world::build_world(scene);
+            const world::FrameSource source(scene);
+            const world::World& world = source.world();
             clip::check_world_limits(scene, world, limits);
             const auto placed = clip::with_cameras_placed(scene, world);
             clip::check_organs_in_view(placed, world);

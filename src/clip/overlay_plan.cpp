@@ -282,15 +282,6 @@ void OverlayPlan::record_volume(int organ, int frame, const Eigen::Matrix3Xd& po
   }
 }
 
-bool OverlayPlan::has_volume(int organ, int frame) const {
-  // An organ's series are recorded together: its first one answers for all.
-  for (const VolumeSeries& s : series_) {
-    if (s.organ == organ)
-      return frame >= 0 && static_cast<std::size_t>(frame) < s.mL.size() && !std::isnan(s.mL[static_cast<std::size_t>(frame)]);
-  }
-  return false;
-}
-
 void OverlayPlan::capture(int frame, const std::vector<const Eigen::Matrix3Xd*>& positions, OverlayFrame& out) const {
   out.frame = frame;
   out.time_s = frame / fps_;

@@ -42,8 +42,6 @@ class OverlayPlan {
   const std::vector<int>& volume_organs() const { return volume_organs_; }
   /// Records organ `organ`'s traced volumes at `frame` from its render-mesh positions. unit: m
   void record_volume(int organ, int frame, const Eigen::Matrix3Xd& positions);
-  /// Whether `frame`'s volume of `organ` is recorded.
-  bool has_volume(int organ, int frame) const;
 
   /// The label anchors of `frame` from every organ's render-mesh positions. unit: m
   void capture(int frame, const std::vector<const Eigen::Matrix3Xd*>& positions, OverlayFrame& out) const;

@@ -9,7 +9,6 @@
 #include <numeric>
 #include <vector>
 
-#include "clip/bake.h"
 #include "clip/camera_framing.h"
 #include "clip/camera_motion.h"
 #include "clip/frame_list.h"
@@ -31,6 +30,7 @@
 #include "render/fxaa.h"
 #include "render/renderer.h"
 #include "sim/model.h"
+#include "world/frame_source.h"
 #include "world/world.h"
 
 namespace systole::clip {
@@ -158,20 +158,37 @@ ClipSurfaces add_surfaces(render::Renderer& renderer, const scene::Scene& scene,
   return s;
 }
 
+/// The title cards before the clip and the text tracks timed after them, worked out once
+/// for the video, its soundtrack and the WebVTT file beside it.
+struct ClipText {
+  int card_frames = 0;  ///< Title-card frames of the scene (all cards).
+  double cards_s = 0;   ///< Their length in this video: 0 unless it starts at the clip's first frame. unit: s
+  std::vector<encode::TextCue> captions;
+  std::vector<encode::ChapterMark> chapters;
+};
+
+ClipText clip_text(const scene::Scene& scene, const std::vector<int>& frames) {
+  ClipText t;
+  const std::vector<int> cards = card_frame_counts(scene);
+  t.card_frames = std::accumulate(cards.begin(), cards.end(), 0);
+  t.cards_s = frames.front() == 0 ? t.card_frames / scene.output.fps : 0.0;
+  t.captions = caption_cues(scene, frames.front(), frames.back(), t.cards_s);
+  t.chapters = chapter_marks(scene, frames.front(), frames.back(), t.cards_s);
+  return t;
+}
+
 /// The video's sink with its soundtrack, subtitle track and chapters (GIF: the frames only).
 std::unique_ptr<encode::FrameSink> open_video_sink(const scene::Scene& scene, const RenderRequest& request,
-                                                   const std::vector<int>& frames, const audio::Soundtrack* sound) {
+                                                   const ClipText& text, const audio::Soundtrack* sound) {
   if (request.video.empty()) return nullptr;
   encode::VideoSettings settings = video_settings(scene.output, video_format(scene, request.video));
   if (settings.format != encode::VideoFormat::kGif) {
-    std::vector<int> cards = card_frame_counts(scene);
-    const double cards_s = frames.front() == 0 ? std::accumulate(cards.begin(), cards.end(), 0) / scene.output.fps : 0.0;
     if (sound != nullptr) {
       settings.audio = sound->samples;
       settings.audio_rate_hz = sound->sample_rate_hz;
     }
-    settings.subtitles = caption_cues(scene, frames.front(), frames.back(), cards_s);
-    settings.chapters = chapter_marks(scene, frames.front(), frames.back(), cards_s);
+    settings.subtitles = text.captions;
+    settings.chapters = text.chapters;
   }
   return encode::open_video(request.video, settings);
 }
@@ -181,41 +198,44 @@ std::unique_ptr<encode::FrameSink> open_png_sink(const RenderRequest& request, i
   return std::make_unique<encode::PngSequenceWriter>(request.png_dir, frame_count);
 }
 
-/// One clip's frames: what the three stages (clip/frame_pipeline.h) share, made in this order
-/// (sinks are opened before the first frame so a bad output path fails before any work). Each
+/// One clip's frames: what the three stages (clip/frame_pipeline.h) share. Made before the
+/// source runs, since its volume traces listen to every frame; the sinks are opened next
+/// (open_sinks), before the first frame, so a bad output path fails before any drawing. Each
 /// stage adds to its own times only (one thread each).
 class ClipFrames {
  public:
-  ClipFrames(const scene::Scene& scene, const RenderRequest& request, const std::vector<int>& frames, world::World& world,
-             render::Renderer& renderer, StageTimes& times, const audio::Soundtrack* sound)
-      : scene_(scene), out_(scene.output), frames_(frames), world_(world), renderer_(renderer), times_(times),
-        surfaces_(add_surfaces(renderer, scene, world)),
+  ClipFrames(const scene::Scene& scene, const std::vector<int>& frames, world::FrameSource& source,
+             render::Renderer& renderer, StageTimes& times)
+      : scene_(scene), out_(scene.output), frames_(frames), source_(source), world_(source.world()),
+        renderer_(renderer), times_(times), surfaces_(add_surfaces(renderer, scene, world_)),
         // The views: each a rectangle with its organs' surfaces; the render stage moves their cameras.
         views_(frame_views(scene, surfaces_.ids)),
-        video_(open_video_sink(scene, request, frames, sound)),
-        png_(open_png_sink(request, out_.frame_count())),
-        // Title cards open the video when it starts at the clip's start; PNG frames are the
-        // clip's frames only (with their captions), numbered as always.
         cards_(scene),
-        video_offset_(video_ && frames.front() == 0 ? cards_.card_frames() : 0),
         // Overlays: anchors captured with the positions (produce), handed on through the render
         // stage's slots (produce may refill its slot before consume is done), drawn after FXAA.
-        overlay_(scene, world),
+        overlay_(scene, world_),
         overlay_produced_(kPipelineDepth),
         overlay_rendered_(kPipelineDepth) {
-    if (!overlay_.volume_organs().empty() && request.from_bake.empty()) {
-      const auto record = [this](int frame) {
+    if (!overlay_.volume_organs().empty()) {
+      // A volume trace listens to every frame of the run, rendered or not (or baked).
+      source_.on_frame([this](int frame) {
         for (int o : overlay_.volume_organs()) {
-          world::render_positions(world_.organs[static_cast<std::size_t>(o)], volume_positions_);
+          source_.positions(o, volume_positions_);
           overlay_.record_volume(o, frame, volume_positions_);
         }
-      };
-      if (world_.frames_done == 0) record(0);
-      world_.after_frame = record;
+      });
     }
-    frame_positions_.resize(world.organs.size());
+    frame_positions_.resize(world_.organs.size());
     images_.assign(kPipelineDepth, Image(out_.width, out_.height));
-    if (!request.from_bake.empty()) bake_.emplace(request.from_bake).check_matches(scene, world);
+  }
+
+  /// Opens the video (with its soundtrack and text tracks) and the PNG folder. Title cards
+  /// open the video when it starts at the clip's start; PNG frames are the clip's frames only
+  /// (with their captions), numbered as always.
+  void open_sinks(const RenderRequest& request, const ClipText& text, const audio::Soundtrack* sound) {
+    video_ = open_video_sink(scene_, request, text, sound);
+    png_ = open_png_sink(request, out_.frame_count());
+    video_offset_ = video_ && frames_.front() == 0 ? cards_.card_frames() : 0;
   }
 
   /// Writes the title cards before the clip's first frame, when the video starts there.
@@ -231,25 +251,18 @@ class ClipFrames {
     times_.encode_s += seconds_since(t0);
   }
 
-  /// Simulates (or reads from the bake) frame i into `slot`: positions, normals, colours, overlay anchors.
+  /// Brings the source to frame i (simulated, or replayed) and fills `slot` from it:
+  /// positions, normals, colours, overlay anchors.
   void produce(int i, int slot) {
     const int f = frames_[static_cast<std::size_t>(i)];
     auto t0 = Clock::now();
-    if (!bake_) world::advance_to_frame(world_, f);  // Steps through every frame in between.
+    source_.advance_to(f);  // Through every frame in between.
     for (std::size_t o = 0; o < world_.organs.size(); ++o) {
       fill_surface(f, o, surfaces_.slots[static_cast<std::size_t>(slot)][o]);
     }
     times_.simulate_s += seconds_since(t0);
     if (!overlay_.empty()) {
       t0 = Clock::now();
-      // From a bake, the volume history comes from the bake's frames (every one up to this).
-      for (int o : bake_ ? overlay_.volume_organs() : std::vector<int>{}) {
-        for (int g = 0; g <= f; ++g) {
-          if (overlay_.has_volume(o, g)) continue;
-          bake_->read(g, o, volume_positions_);
-          overlay_.record_volume(o, g, volume_positions_);
-        }
-      }
       overlay_.capture(f, frame_positions_, overlay_produced_[static_cast<std::size_t>(slot)]);
       times_.simulate_s += seconds_since(t0);  // This thread's own sum: the capture is counted with it.
     }
@@ -304,13 +317,9 @@ class ClipFrames {
   }
 
  private:
-  /// Organ o's surface at frame f: the positions source is the simulation, or a bake of it.
+  /// Organ o's surface at frame f, from the source.
   void fill_surface(int f, std::size_t o, SurfaceBuffers& buf) {
-    if (bake_) {
-      bake_->read(f, static_cast<int>(o), buf.mesh_positions);
-    } else {
-      world::render_positions(world_.organs[o], buf.mesh_positions);
-    }
+    source_.positions(static_cast<int>(o), buf.mesh_positions);
     const Eigen::Index n = buf.mesh_positions.cols();
     const double* x = buf.mesh_positions.data();
     for (Eigen::Index k = 0; k < 3 * n; ++k) buf.positions[k] = static_cast<float>(x[k]);
@@ -324,7 +333,8 @@ class ClipFrames {
   const scene::Scene& scene_;
   const scene::Output& out_;
   const std::vector<int>& frames_;
-  world::World& world_;
+  world::FrameSource& source_;
+  const world::World& world_;
   render::Renderer& renderer_;
   StageTimes& times_;
   ClipSurfaces surfaces_;
@@ -338,7 +348,6 @@ class ClipFrames {
   std::vector<const Eigen::Matrix3Xd*> frame_positions_;
   std::vector<Image> images_;
   render::Fxaa fxaa_;
-  std::optional<BakeReader> bake_;
 };
 
 }  // namespace
@@ -350,23 +359,28 @@ StageTimes render_clip(const scene::Scene& given, const RenderRequest& request) 
   const std::vector<int> frames = selected_frames(request, out.frame_count());
   check_scene_limits(given, {static_cast<int>(frames.size()), !request.video.empty(), !request.png_dir.empty()},
                      request.limits);
-  world::World world = world::build_world(given);
-  check_world_limits(given, world, request.limits);
-  const scene::Scene scene = with_cameras_placed(given, world);
-  check_organs_in_view(scene, world);
+  if (!given.audio.enabled && !request.wav.empty()) {
+    throw Error(ExitCode::kUsage, "--wav: " + given.path + " has no audio: section, so there is no soundtrack to write");
+  }
+  // The clip's one run of the simulation: the pictures, the volume traces and the sound listen to it.
+  world::FrameSource source(given);
+  check_world_limits(given, source.world(), request.limits);
+  const scene::Scene scene = with_cameras_placed(given, source.world());
+  check_organs_in_view(scene, source.world());
   const int msaa = out.antialias == scene::Antialias::kMsaa4 ? 4 : out.antialias == scene::Antialias::kMsaa2 ? 2 : 0;
   render::Renderer renderer(out.width, out.height, msaa);
-  // The soundtrack first (its own simulation pass: clip/soundtrack.h), for the video and --wav.
+  if (!request.from_bake.empty()) source.replay_bake(request.from_bake, scene);
+  ClipFrames clip(scene, frames, source, renderer, times);
+  const ClipText text = clip_text(scene, frames);
+  // The soundtrack first, for the video and --wav: the source simulates ahead with the sound
+  // listening, and the frames below replay what it kept.
   std::optional<audio::Soundtrack> sound;
   if (scene.audio.enabled && (!request.wav.empty() || !request.video.empty())) {
     const auto t0 = Clock::now();
-    const std::vector<int> cards = card_frame_counts(scene);
-    sound = make_soundtrack(scene, frames.front(), frames.back(), std::accumulate(cards.begin(), cards.end(), 0));
+    sound = make_soundtrack(scene, source, frames, text.card_frames);
     times.simulate_s += seconds_since(t0);
-  } else if (!request.wav.empty()) {
-    throw Error(ExitCode::kUsage, "--wav: " + scene.path + " has no audio: section, so there is no soundtrack to write");
   }
-  ClipFrames clip(scene, request, frames, world, renderer, times, sound ? &*sound : nullptr);
+  clip.open_sinks(request, text, sound ? &*sound : nullptr);
   Progress progress(request.job.empty() ? scene.name : request.job, static_cast<int>(frames.size()),
                     request.progress);
   PipelineStages stages;
@@ -380,12 +394,9 @@ StageTimes render_clip(const scene::Scene& given, const RenderRequest& request) 
   run_frame_pipeline(static_cast<int>(frames.size()), kPipelineDepth, request.overlap, stages);
   clip.finish();
   if (!request.wav.empty()) audio::write_wav(request.wav, *sound);
-  if (!request.video.empty() && !scene.captions.empty()) {
-    const std::vector<int> cards = card_frame_counts(scene);
-    const double cards_s = frames.front() == 0 ? std::accumulate(cards.begin(), cards.end(), 0) / out.fps : 0.0;
-    encode::write_webvtt(webvtt_path(request.video), caption_cues(scene, frames.front(), frames.back(), cards_s));
-  }
+  if (!request.video.empty() && !scene.captions.empty()) encode::write_webvtt(webvtt_path(request.video), text.captions);
   progress.finish();
+  times.steps = source.steps_taken();
   times.wall_s = seconds_since(start);
   return times;
 }

@@ -26,7 +26,7 @@ struct RenderRequest {
   std::vector<int> frames;
   ProgressStyle progress = ProgressStyle::kNone;
   std::string job;  ///< Names the clip in progress reports; empty: the scene's name.
-  /// A bake of this scene (app/bake.h): positions are read from it instead of simulated.
+  /// A bake of this scene (world/bake.h): positions are read from it instead of simulated.
   std::filesystem::path from_bake;
   /// Checked before the world is built (frame size, duration, output size) and before the
   /// first step (vertices, solver substeps); Error(kDataError) names the one exceeded.
@@ -48,6 +48,7 @@ struct StageTimes {
   double overlay_s = 0;    ///< Drawing the teaching overlays (app/overlay_plan.h) on the frames. unit: s
   double encode_s = 0;     ///< unit: s (video and PNG writing)
   double wall_s = 0;       ///< Whole run including set-up. unit: s
+  long long steps = 0;     ///< Solver steps of the clip's one simulation run, summed over its organs.
 };
 
 /// Renders the clip (or the requested frames of it). Outputs appear only when complete

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "sim/constraints/volume.h"
 
@@ -37,7 +38,7 @@ double site_weight(scene::Stethoscope site, audio::SoundKind kind) {
 
 }  // namespace
 
-SoundProbe::SoundProbe(const scene::Scene& scene, world::World& world) {
+SoundProbe::SoundProbe(const scene::Scene& scene, const world::World& world) {
   const scene::Audio& a = scene.audio;
   if (a.heart.enabled) {
     heart_organ_ = organ_index(scene, a.heart.organ);
@@ -53,14 +54,15 @@ SoundProbe::SoundProbe(const scene::Scene& scene, world::World& world) {
     }
   }
   if (a.breath.enabled) breath_organ_ = organ_index(scene, a.breath.organ);
-  world.after_step = [this](int organ, const world::OrganBody& body) {
-    if (organ == heart_organ_) {
-      if (left_ventricle_ >= 0) record_valve_closure(body);
-      size_.push_back({body.state.time_s, ventricles_.measure(body.state.x)});
-    }
-    if (organ == breath_organ_ && body.model.volume.enabled)
-      volume_.push_back({body.state.time_s, sim::enclosed_volume(body.state.x, body.model.volume.triangles)});
-  };
+}
+
+void SoundProbe::record(int organ, const world::OrganBody& body) {
+  if (organ == heart_organ_) {
+    if (left_ventricle_ >= 0) record_valve_closure(body);
+    size_.push_back({body.state.time_s, ventricles_.measure(body.state.x)});
+  }
+  if (organ == breath_organ_ && body.model.volume.enabled)
+    volume_.push_back({body.state.time_s, sim::enclosed_volume(body.state.x, body.model.volume.triangles)});
 }
 
 void SoundProbe::record_valve_closure(const world::OrganBody& body) {
@@ -163,18 +165,28 @@ audio::MixRequest mix_request(const scene::Scene& scene, const SoundSources& src
   return r;
 }
 
-audio::Soundtrack make_soundtrack(const scene::Scene& scene, int first_frame, int last_frame, int card_frames) {
+audio::Soundtrack make_soundtrack(const scene::Scene& scene, world::FrameSource& source, const std::vector<int>& frames,
+                                  int card_frames) {
+  const int first_frame = frames.front(), last_frame = frames.back();
   const ClipClock clock = clip_clock(scene, first_frame, card_frames);
   const double duration_s = clock.cards_s + (last_frame - first_frame + 1) / clock.fps;
   const bool loop = scene.output.loop && first_frame == 0 && last_frame + 1 == scene.output.frame_count();
-  world::World world = world::build_world(scene);
-  SoundProbe probe(scene, world);
   // Past the last frame: a turn is known once the size has moved back from it (half a
   // second confirms the last S1 or S2 of the clip); a loop's last murmur window closes within
   // a second.
-  const int extra = static_cast<int>(std::ceil((loop ? 1.0 : 0.5) / world.frame_s));
-  world::advance_to_frame(world, last_frame + extra);
-  return audio::mix(mix_request(scene, probe.finish(), clock, duration_s, loop));
+  const int extra = static_cast<int>(std::ceil((loop ? 1.0 : 0.5) / source.world().frame_s));
+  // Shared with the hook, which the source keeps after this returns (replays call no step hook).
+  const auto probe = std::make_shared<SoundProbe>(scene, source.world());
+  const world::StepHook listen = [probe](int organ, const world::OrganBody& body) { probe->record(organ, body); };
+  if (source.replays_bake()) {
+    world::FrameSource own(scene);
+    own.on_step(listen);
+    own.advance_to(last_frame + extra);
+  } else {
+    source.on_step(listen);
+    source.simulate_ahead(last_frame + extra, frames);
+  }
+  return audio::mix(mix_request(scene, probe->finish(), clock, duration_s, loop));
 }
 
 }  // namespace systole::clip

@@ -3,8 +3,9 @@
 // (world/sound_sources.h) gives the events, which are placed in video time and synthesized
 // by audio/. The video's frames arrive in order while the sound of a frame can depend on
 // what happens after it (a murmur ends at the next S2, a loop's last sound rings into its
-// first frame), so the soundtrack is made before the frames: one simulation-only pass over
-// the clip (deterministic, so it is the same motion the frames show).
+// first frame), so the soundtrack is made before the frames: it listens to the clip's own
+// frame source, which simulates ahead through the clip and then replays the frames it kept
+// (world/frame_source.h): one run of the simulation for the sound and the pictures.
 
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "scene/scene.h"
 #include "sim/circulation.h"
 #include "world/sound_sources.h"
+#include "world/frame_source.h"
 #include "world/world.h"
 
 namespace systole::clip {
@@ -24,11 +26,13 @@ struct SoundSources {
   std::vector<world::Sample> breath_volume;   ///< audio.breath's organ, every step. unit: m^3
 };
 
-/// Measures the scene's sound sources on `world` as it is stepped: call before stepping,
-/// then finish() after. Holds a reference to `world`, whose after_step it sets.
+/// Measures the scene's sound sources on a world as it is stepped: record() after every
+/// solver step (a world::StepHook), then finish().
 class SoundProbe {
  public:
-  SoundProbe(const scene::Scene& scene, world::World& world);
+  SoundProbe(const scene::Scene& scene, const world::World& world);
+  /// Takes the sample of organ `organ` after its step.
+  void record(int organ, const world::OrganBody& body);
   /// The samples so far and the events they show.
   SoundSources finish() const;
 
@@ -66,10 +70,13 @@ ClipClock clip_clock(const scene::Scene& scene, int first_frame, int card_frames
 audio::MixRequest mix_request(const scene::Scene& scene, const SoundSources& sources, const ClipClock& clock,
                               double duration_s, bool loop);
 
-/// The soundtrack of a video of clip frames [first_frame, last_frame] with `card_frames` of
-/// title cards: simulates a world of its own through the last frame and half a second more
-/// (a second for a loop, so its last murmur window closes) so the clip's last turns are
-/// confirmed, measures, mixes.
-audio::Soundtrack make_soundtrack(const scene::Scene& scene, int first_frame, int last_frame, int card_frames);
+/// The soundtrack of a video of clip `frames` (consecutive, or a selection whose first and
+/// last bound the video) with `card_frames` of title cards. Listens to `source` while it
+/// simulates ahead through the last frame and half a second more (a second for a loop, so its
+/// last murmur window closes; the clip's last turns are confirmed), keeping `frames` for the
+/// pictures to replay; then mixes. A source that replays a bake has no steps to hear: the
+/// sound then runs a source of its own.
+audio::Soundtrack make_soundtrack(const scene::Scene& scene, world::FrameSource& source, const std::vector<int>& frames,
+                                  int card_frames);
 
 }  // namespace systole::clip

@@ -1,14 +1,12 @@
 #include "export/recording.h"
 
 #include <cctype>
-#include <optional>
 
-#include "clip/bake.h"
 #include "clip/camera_framing.h"
 #include "clip/camera_motion.h"
 #include "render/color_map.h"
 #include "sim/model.h"
-#include "world/world.h"
+#include "world/frame_source.h"
 
 namespace systole::exporter {
 namespace {
@@ -61,7 +59,8 @@ std::filesystem::path organ_file(const std::filesystem::path& file, const Record
 }
 
 Recording record(const scene::Scene& scene, const std::filesystem::path& from_bake) {
-  world::World world = world::build_world(scene);
+  world::FrameSource source(scene);
+  const world::World& world = source.world();
   Recording rec;
   rec.scene_name = scene.name;
   rec.fps = scene.output.fps;
@@ -71,27 +70,23 @@ Recording record(const scene::Scene& scene, const std::filesystem::path& from_ba
   // Placed on the organs at rest, before any step, as render_clip places it.
   rec.camera = clip::camera_at(clip::with_cameras_placed(scene, world).camera, 0);
   for (std::size_t o = 0; o < world.organs.size(); ++o) rec.organs.push_back(surface_of(scene.organs[o], world.organs[o]));
-  std::optional<clip::BakeReader> bake;
-  if (!from_bake.empty()) bake.emplace(from_bake).check_matches(scene, world);
+  if (!from_bake.empty()) source.replay_bake(from_bake, scene);
   const int frames = scene.output.frame_count();
   for (auto& track : rec.organs) {
     track.frames_m.resize(static_cast<std::size_t>(frames));
     track.activation.resize(static_cast<std::size_t>(frames));
   }
-  for (int f = 0; f < frames; ++f) {
-    if (!bake) world::advance_to_frame(world, f);
+  // The recorder is a listener on the run: every frame's positions and activations.
+  source.on_frame([&](int f) {
     // The organ time of clip frame f, where the world stepped it (world::advance_to_frame).
     const double t_s = scene.output.organ_time_s(f);
     for (std::size_t o = 0; o < world.organs.size(); ++o) {
       auto& track = rec.organs[o];
-      if (bake) {
-        bake->read(f, static_cast<int>(o), track.frames_m[static_cast<std::size_t>(f)]);
-      } else {
-        world::render_positions(world.organs[o], track.frames_m[static_cast<std::size_t>(f)]);
-      }
+      source.positions(static_cast<int>(o), track.frames_m[static_cast<std::size_t>(f)]);
       sim::region_activations(world.organs[o].model, t_s, track.activation[static_cast<std::size_t>(f)]);
     }
-  }
+  });
+  source.advance_to(frames - 1);
   return rec;
 }
 

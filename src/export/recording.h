@@ -5,7 +5,7 @@
 // (world::render_positions), whatever body carries them - particles, a lattice or an
 // embedded myocardium - or read back from a bake of the same scene.
 //
-// Inputs:  a loaded scene (and optionally a bake of it, clip/bake.h).
+// Inputs:  a loaded scene (and optionally a bake of it, world/bake.h).
 // Outputs: a Recording in memory (24 bytes per vertex per frame).
 // See also: export/exporter.h (which format gets which recording), docs/export.md.
 
@@ -70,8 +70,8 @@ std::filesystem::path organ_file(const std::filesystem::path& file, const Record
 
 /// Simulates the scene's clip (every frame, output.start_frame settling first) and records
 /// it; or, with `from_bake`, reads the positions from that bake after checking it fits the
-/// scene (Error(kDataError) naming what differs). Throws what build_world and
-/// advance_to_frame throw.
+/// scene (Error(kDataError) naming what differs). A listener on one run of the scene's frame
+/// source (world/frame_source.h). Throws what build_world and advance_to_frame throw.
 Recording record(const scene::Scene& scene, const std::filesystem::path& from_bake = {});
 
 }  // namespace systole::exporter

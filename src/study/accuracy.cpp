@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include "sim/model.h"
 #include "sim/motion_error.h"
 #include "study/driven_regions.h"
+#include "world/frame_source.h"
 #include "world/world.h"
 
 namespace systole::study {
@@ -75,23 +77,25 @@ scene::Scene configured(const scene::Scene& base, const BenchConfig& config, con
   return s;
 }
 
-world::World build(const scene::Scene& base, const BenchConfig& config, const BenchOptions& options) {
+/// The configuration's frame source: the scene as configured, built; a refined auto step is
+/// rebuilt with the step and substeps auto chose, the substeps multiplied.
+std::unique_ptr<world::FrameSource> build(const scene::Scene& base, const BenchConfig& config, const BenchOptions& options) {
   scene::Scene s = configured(base, config, options);
-  world::World world = world::build_world(s);
+  auto source = std::make_unique<world::FrameSource>(s);
   if (config.dt_s == 0 && config.refine > 1) {
-    // A refined auto step: the step and substeps auto chose, the substeps multiplied.
     int substeps = 1;
-    for (const auto& body : world.organs) substeps = std::max(substeps, body.model.substeps);
+    for (const auto& body : source->world().organs) substeps = std::max(substeps, body.model.substeps);
     s.solver.auto_dt = false;
-    s.solver.dt_s = world.dt_s;
+    s.solver.dt_s = source->world().dt_s;
     s.solver.substeps = substeps * config.refine;
-    world = world::build_world(s);
+    source = std::make_unique<world::FrameSource>(s);
   }
-  return world;
+  return source;
 }
 
 Trace run(const scene::Scene& base, const BenchConfig& config, const BenchOptions& options) {
-  world::World world = build(base, config, options);
+  const std::unique_ptr<world::FrameSource> source = build(base, config, options);
+  const world::World& world = source->world();
   Trace trace;
   trace.regions = driven_regions(base, world);
   trace.region_signals.resize(trace.regions.size());
@@ -105,10 +109,11 @@ Trace run(const scene::Scene& base, const BenchConfig& config, const BenchOption
   const int samples = static_cast<int>(std::lround(options.duration_s * options.sample_hz));
   std::vector<Eigen::Matrix3Xd> organ_positions(world.organs.size());
   double wall_s = 0;
+  // Not a listener: the cost is the advance alone, timed apart from the sampling.
   for (int f = 1; f <= settle + samples; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     try {
-      world::advance_to_frame(world, f);
+      source->advance_to(f);
     } catch (const Error& e) {
       if (e.code() != ExitCode::kDiverged) throw;
       trace.diverged = e.what();
@@ -116,17 +121,9 @@ Trace run(const scene::Scene& base, const BenchConfig& config, const BenchOption
     }
     wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (f <= settle) continue;
-    Eigen::Index total = 0;
-    for (std::size_t o = 0; o < world.organs.size(); ++o) {
-      world::render_positions(world.organs[o], organ_positions[o]);
-      total += organ_positions[o].cols();
-    }
-    Eigen::Matrix3Xd all(3, total);
-    Eigen::Index at = 0;
-    for (const auto& p : organ_positions) {
-      all.middleCols(at, p.cols()) = p;
-      at += p.cols();
-    }
+    for (std::size_t o = 0; o < world.organs.size(); ++o) source->positions(static_cast<int>(o), organ_positions[o]);
+    Eigen::Matrix3Xd all;
+    world::stack_positions(organ_positions, all);
     for (std::size_t r = 0; r < trace.regions.size(); ++r) {
       trace.region_signals[r].push_back(radial_excursion_m(trace.regions[r], all));
     }

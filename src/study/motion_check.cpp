@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "study/driven_regions.h"
+#include "world/frame_source.h"
 #include "world/world.h"
 
 namespace systole::study {
@@ -63,8 +64,29 @@ bool MotionReport::parts_kept() const {
                      [](const OrganParts& o) { return o.worst.depth_m <= kCrossingTolerance_m; });
 }
 
+namespace {
+
+/// Refuses a check with nothing to check: too short for two beats after settling, and no parts.
+void check_something_to_check(const MotionReport& report, const std::vector<DrivenRegion>& regions,
+                              const std::vector<PartCrossingWatch>& watches, const MotionOptions& options) {
+  const bool any_parts =
+      std::any_of(watches.begin(), watches.end(), [](const PartCrossingWatch& w) { return w.parts().size() >= 2; });
+  double shortest_two_beats = HUGE_VAL;
+  for (const auto& r : regions) shortest_two_beats = std::min(shortest_two_beats, (options.settle_beats + 2) / r.rate_hz);
+  if (report.duration_s < shortest_two_beats && !any_parts) {
+    throw Error(ExitCode::kUsage, "motion: nothing to check in " + report.scene +
+                                      ": no periodically driven region has " + std::to_string(options.settle_beats + 2) +
+                                      " beats in " + std::to_string(report.duration_s) + " s (the first " +
+                                      std::to_string(options.settle_beats) +
+                                      " left out) and no organ has parts; give a longer --duration");
+  }
+}
+
+}  // namespace
+
 MotionReport check_motion(const scene::Scene& scene, const MotionOptions& options) {
-  world::World world = world::build_world(scene);
+  world::FrameSource source(scene);
+  const world::World& world = source.world();
   MotionReport report;
   report.scene = scene.path;
   report.duration_s = options.duration_s > 0 ? options.duration_s : scene.output.duration_s;
@@ -84,41 +106,22 @@ MotionReport check_motion(const scene::Scene& scene, const MotionOptions& option
     // An empty mesh stands in for an anatomy's: nothing to watch (MotionReport::anatomies).
     watches.emplace_back(anatomy ? mesh::OrganMesh{} : body.geometry.mesh, options.band_m);
   }
-  const bool any_parts =
-      std::any_of(watches.begin(), watches.end(), [](const PartCrossingWatch& w) { return w.parts().size() >= 2; });
-  const double shortest_two_beats = [&] {
-    double s = HUGE_VAL;
-    for (const auto& r : regions) s = std::min(s, (options.settle_beats + 2) / r.rate_hz);
-    return s;
-  }();
-  if (report.duration_s < shortest_two_beats && !any_parts) {
-    throw Error(ExitCode::kUsage, "motion: nothing to check in " + report.scene +
-                                      ": no periodically driven region has " + std::to_string(options.settle_beats + 2) +
-                                      " beats in " + std::to_string(report.duration_s) + " s (the first " +
-                                      std::to_string(options.settle_beats) +
-                                      " left out) and no organ has parts; give a longer --duration");
-  }
+  check_something_to_check(report, regions, watches, options);
 
+  // The check listens to every frame of the run: the parts' crossings, the regions' beats.
   std::vector<std::vector<double>> signals(regions.size());
-  std::vector<Eigen::Matrix3Xd> positions(world.organs.size());
-  Eigen::Matrix3Xd stacked;
-  const double t0_s = world.organs.empty() ? 0 : world.organs[0].state.time_s;
-  for (int f = 0; f <= report.frames; ++f) {
-    if (f > 0) world::advance_to_frame(world, f);
-    Eigen::Index total = 0;
-    for (std::size_t o = 0; o < world.organs.size(); ++o) {
-      world::render_positions(world.organs[o], positions[o]);
-      total += positions[o].cols();
-      if (f > 0) watches[o].check(positions[o], f);
+  Eigen::Matrix3Xd positions, stacked;
+  double t0_s = 0;  // Organ time of clip frame 0 (after a loop's settling frames).
+  source.on_frame([&](int f) {
+    if (f == 0 && !world.organs.empty()) t0_s = world.organs[0].state.time_s;
+    for (std::size_t o = 0; f > 0 && o < world.organs.size(); ++o) {
+      source.positions(static_cast<int>(o), positions);
+      watches[o].check(positions, f);
     }
-    stacked.resize(3, total);
-    Eigen::Index at = 0;
-    for (const auto& p : positions) {
-      stacked.middleCols(at, p.cols()) = p;
-      at += p.cols();
-    }
+    source.stacked_positions(stacked);
     for (std::size_t r = 0; r < regions.size(); ++r) signals[r].push_back(radial_excursion_m(regions[r], stacked));
-  }
+  });
+  source.advance_to(report.frames);
   for (std::size_t r = 0; r < regions.size(); ++r) {
     RegionBeats beats = compare_beats(regions[r], signals[r], t0_s, world.frame_s, options.settle_beats);
     if (beats.beats >= 2) report.regions.push_back(std::move(beats));

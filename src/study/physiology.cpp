@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "common/error.h"
+#include "world/frame_source.h"
 #include "world/world.h"
 
 namespace systole::study {
@@ -79,98 +80,94 @@ std::vector<std::string> PhysiologyReport::outside_normal() const {
   return out;
 }
 
-PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats) {
-  world::World world = world::build_world(scene);
-  // The beat is found in organ time from 0, whatever part of it the clip shows (a loop
-  // starts after its settling beats: output.start_frame).
-  world.start_frame = 0;
-  PhysiologyReport report;
-  report.scene = scene.path;
-  int organ = -1;
-  for (std::size_t o = 0; o < world.organs.size() && organ < 0; ++o) {
-    if (!world.organs[o].geometry.mesh.anatomy.empty()) organ = static_cast<int>(o);
+namespace {
+
+/// The first organ with a generated anatomy. Throws Error(kUsage) when none has one.
+int anatomical_organ(const scene::Scene& scene, const world::World& world) {
+  for (std::size_t o = 0; o < world.organs.size(); ++o) {
+    if (!world.organs[o].geometry.mesh.anatomy.empty()) return static_cast<int>(o);
   }
-  if (organ < 0) {
-    throw Error(ExitCode::kUsage, scene.path + ": --physiology measures a generated anatomical heart "
-                                               "(mesh: {procedural: heart}); no organ of this scene has one");
-  }
-  world::OrganBody& body = world.organs[organ];
-  report.organ = body.model.name;
+  throw Error(ExitCode::kUsage, scene.path + ": --physiology measures a generated anatomical heart "
+                                             "(mesh: {procedural: heart}); no organ of this scene has one");
+}
+
+/// The left ventricle's periodic drive, which times the beat. Throws Error(kUsage) without one.
+const sim::RegionParams& left_ventricle_drive(const scene::Scene& scene, const sim::Model& model) {
   const sim::RegionParams* ventricle = nullptr;
-  for (const auto& r : body.model.regions) {
+  for (const auto& r : model.regions) {
     if (r.name == "left_ventricle" && r.drive.waveform != sim::Waveform::kNone && r.drive.rate_hz > 0) ventricle = &r;
   }
   if (!ventricle) {
     throw Error(ExitCode::kUsage, scene.path + ": --physiology times the beat by the left ventricle's drive; organ '" +
-                                      report.organ + "' has no region left_ventricle with a periodic drive");
+                                      model.name + "' has no region left_ventricle with a periodic drive");
   }
-  report.beat_s = 1.0 / ventricle->drive.rate_hz;
-  report.frame_s = world.frame_s;
-  report.measured_from_s = settle_beats * report.beat_s + ventricle->drive.delay_s;
-  const mesh::Anatomy& anatomy = body.geometry.mesh.anatomy;
-  const mesh::VentricleLandmarks& lv = anatomy.left_ventricle;
+  return *ventricle;
+}
 
-  // One frame before the beat to one after it: the valves need the flow on both sides.
-  const int first = static_cast<int>(std::floor(report.measured_from_s / world.frame_s)) - 1;
-  const int last = static_cast<int>(std::ceil((report.measured_from_s + report.beat_s) / world.frame_s)) + 1;
-  std::vector<double> times;
+/// What the run shows of the heart around the measured beat: every frame's shape, chamber
+/// volumes and valve openings and, with blood, every step's valve states (the ventricles'
+/// phases change between solver steps, so the valve events get the step's resolution).
+struct HeartRecording {
+  std::vector<double> times;  ///< Organ time of each recorded frame. unit: s
   std::vector<Eigen::Matrix3Xd> shapes;
-  std::vector<std::vector<double>> volumes, openings;
-  Eigen::Matrix3Xd x;
-  // A heart with blood: its valves open by its ventricles' phases, which change between
-  // solver steps; every step's are kept, so the valve events have the step's resolution.
-  std::vector<double> step_times;
+  std::vector<std::vector<double>> volumes, openings;  ///< Per frame, per cavity (ml) / valve.
+  std::vector<double> step_times;  ///< With blood. unit: s
   std::vector<std::vector<bool>> step_open;
+};
+
+/// Listens to the source as it runs through frame `last`, recording organ `organ` from frame
+/// `first` on (never frame 0: the run is measured after its first step).
+HeartRecording record_heart(world::FrameSource& source, int organ, int first, int last) {
+  HeartRecording rec;
+  const world::OrganBody& body = source.world().organs[static_cast<std::size_t>(organ)];
   if (body.model.circulation.enabled()) {
-    world.after_step = [&](int o, const world::OrganBody& b) {
+    source.on_step([&rec, organ](int o, const world::OrganBody& b) {
       if (o != organ) return;
       std::vector<bool> open;
       for (const auto& valve : b.valves.valves) {
         open.push_back(valve.chamber >= 0 && world::valve_open(b.state.chambers[static_cast<std::size_t>(valve.chamber)].phase, valve.inflow));
       }
-      step_times.push_back(b.state.time_s);
-      step_open.push_back(std::move(open));
-    };
+      rec.step_times.push_back(b.state.time_s);
+      rec.step_open.push_back(std::move(open));
+    });
   }
-  for (int f = 1; f <= last; ++f) {
-    world::advance_to_frame(world, f);
-    if (f < first) continue;
-    times.push_back(body.state.time_s);
-    sim::embed(body.embedding, body.state.x, x);
-    shapes.push_back(x);
+  source.on_frame([&rec, &body, first](int f) {
+    if (f < 1 || f < first) return;
+    rec.times.push_back(body.state.time_s);
+    rec.shapes.emplace_back();
+    sim::embed(body.embedding, body.state.x, rec.shapes.back());
     std::vector<double> v;
     for (double m3 : body.valves.volume_m3) v.push_back(m3 / kMl);  // Measured by the valves this frame.
-    volumes.push_back(std::move(v));
+    rec.volumes.push_back(std::move(v));
     std::vector<double> o;
     for (const auto& valve : body.valves.valves) o.push_back(valve.opening);
-    openings.push_back(std::move(o));
-  }
-  // The beat: frames within [start, start + beat).
-  const double start = report.measured_from_s;
+    rec.openings.push_back(std::move(o));
+  });
+  source.advance_to(last);
+  return rec;
+}
+
+/// The recorded frames within [start, start + beat).
+std::vector<int> beat_frames(const std::vector<double>& times, double start, double beat_s) {
   std::vector<int> beat;
   for (std::size_t i = 0; i < times.size(); ++i) {
-    if (times[i] >= start - 1e-9 && times[i] < start + report.beat_s - 1e-9) beat.push_back(static_cast<int>(i));
+    if (times[i] >= start - 1e-9 && times[i] < start + beat_s - 1e-9) beat.push_back(static_cast<int>(i));
   }
-  if (beat.size() < 2) {
-    throw Error(ExitCode::kUsage, scene.path + ": --physiology samples a beat at the scene's frames, and frames " +
-                                      std::to_string(world.frame_s) + " s apart leave fewer than two in a beat of " +
-                                      std::to_string(report.beat_s) + " s; raise output.fps");
-  }
-  for (std::size_t c = 0; c < anatomy.cavities.size(); ++c) {
-    ChamberVolume chamber{anatomy.cavities[c].name, -HUGE_VAL, HUGE_VAL};
-    for (int i : beat) chamber.largest_ml = std::max(chamber.largest_ml, volumes[i][c]), chamber.smallest_ml = std::min(chamber.smallest_ml, volumes[i][c]);
-    report.chambers.push_back(chamber);
-  }
-  int lv_cavity = 0;
-  for (std::size_t c = 0; c < anatomy.cavities.size(); ++c) {
-    if (anatomy.cavities[c].name == "left_ventricle") lv_cavity = static_cast<int>(c);
-  }
-  // Valve events: where the opening leaves or returns to 0, between frames (or, with blood,
-  // between steps), within the beat.
-  const bool by_step = !step_times.empty();
-  const std::vector<double>& event_times = by_step ? step_times : times;
+  return beat;
+}
+
+/// Valve events: where the opening leaves or returns to 0, between frames (or, with blood,
+/// between steps), within the beat; the aortic valve's open share of the beat; and the
+/// isovolumic relaxation, from the aortic closure to the mitral opening that follows it (in
+/// this beat, or the next one's at the same time in the beat). Returns the aortic closure
+/// after activation (ms; NaN when it is not seen).
+double measure_valves(const mesh::Anatomy& anatomy, const world::OrganBody& body, const HeartRecording& rec,
+                      PhysiologyReport& report) {
+  const double start = report.measured_from_s;
+  const bool by_step = !rec.step_times.empty();
+  const std::vector<double>& event_times = by_step ? rec.step_times : rec.times;
   for (std::size_t v = 0; v < body.valves.valves.size(); ++v) {
-    const auto open_at = [&](std::size_t i) { return by_step ? bool(step_open[i][v]) : openings[i][v] > 0; };
+    const auto open_at = [&](std::size_t i) { return by_step ? bool(rec.step_open[i][v]) : rec.openings[i][v] > 0; };
     for (std::size_t i = 1; i < event_times.size(); ++i) {
       const bool was_open = open_at(i - 1), is_open = open_at(i);
       if (was_open == is_open) continue;
@@ -190,8 +187,6 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   }
   std::sort(report.valve_events.begin(), report.valve_events.end(),
             [](const ValveEvent& a, const ValveEvent& b) { return a.after_activation_ms < b.after_activation_ms; });
-  // Isovolumic relaxation: from the aortic closure to the mitral opening that follows it
-  // (in this beat, or the next one's at the same time in the beat).
   const auto event = [&](const char* valve, bool opens, double from_ms) {
     double first = std::numeric_limits<double>::quiet_NaN();
     for (const ValveEvent& e : report.valve_events) {
@@ -203,6 +198,23 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   };
   const double aortic_closes = event("aortic_valve", false, 0);
   if (!std::isnan(aortic_closes)) report.isovolumic_relaxation_ms = event("mitral_valve", true, aortic_closes) - aortic_closes;
+  return aortic_closes;
+}
+
+/// Each chamber's range over the beat, and the left ventricle's end-diastolic and
+/// end-systolic frames (indices into the recording) and volumes.
+std::pair<int, int> measure_volumes(const mesh::Anatomy& anatomy, const HeartRecording& rec, const std::vector<int>& beat,
+                                    double aortic_closes_ms, PhysiologyReport& report) {
+  const auto& volumes = rec.volumes;
+  for (std::size_t c = 0; c < anatomy.cavities.size(); ++c) {
+    ChamberVolume chamber{anatomy.cavities[c].name, -HUGE_VAL, HUGE_VAL};
+    for (int i : beat) chamber.largest_ml = std::max(chamber.largest_ml, volumes[i][c]), chamber.smallest_ml = std::min(chamber.smallest_ml, volumes[i][c]);
+    report.chambers.push_back(chamber);
+  }
+  int lv_cavity = 0;
+  for (std::size_t c = 0; c < anatomy.cavities.size(); ++c) {
+    if (anatomy.cavities[c].name == "left_ventricle") lv_cavity = static_cast<int>(c);
+  }
   int ed = beat.front(), es = beat.front();
   for (int i : beat) {
     if (volumes[i][lv_cavity] > volumes[ed][lv_cavity]) ed = i;
@@ -212,9 +224,10 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   // not timed, the smallest volume's (Lang et al. 2015, "Chamber quantification"). With blood
   // the volume stays at its least through the isovolumic relaxation, so its smallest frame
   // could be any of them, the muscle already relaxing in the later ones.
-  if (by_step && !std::isnan(aortic_closes)) {
+  const double start = report.measured_from_s;
+  if (!rec.step_times.empty() && !std::isnan(aortic_closes_ms)) {
     for (int i : beat) {
-      if (1000 * (times[i] - start) < aortic_closes) continue;
+      if (1000 * (rec.times[i] - start) < aortic_closes_ms) continue;
       es = i;
       break;
     }
@@ -222,8 +235,15 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   report.end_diastolic_ml = volumes[ed][lv_cavity];
   report.end_systolic_ml = volumes[es][lv_cavity];
   report.ejection_fraction_pct = 100 * (report.end_diastolic_ml - report.end_systolic_ml) / report.end_diastolic_ml;
-  report.end_systole_ms = 1000 * (times[es] - start);
+  report.end_systole_ms = 1000 * (rec.times[es] - start);
+  return {ed, es};
+}
 
+/// The left ventricle's shape from end-diastole `ed` to end-systole `es`: long-axis
+/// shortening, wall and segment thickening; and over the beat, twist and muscle volume.
+void measure_shape(const mesh::Anatomy& anatomy, const std::vector<Eigen::Matrix3Xd>& shapes, const std::vector<int>& beat,
+                   int ed, int es, PhysiologyReport& report) {
+  const mesh::VentricleLandmarks& lv = anatomy.left_ventricle;
   auto long_axis = [&](const Eigen::Matrix3Xd& s) { return (s.col(lv.apex) - centroid(lv.annulus, s)).norm(); };
   auto thickness = [&](const Eigen::Matrix3Xd& s) {
     double sum = 0;
@@ -252,6 +272,40 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
     report.muscle_volume_change_pct =
         std::max(report.muscle_volume_change_pct, 100 * std::abs(muscle_volume(anatomy.muscle, shapes[i]) / muscle0 - 1));
   }
+}
+
+}  // namespace
+
+PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats) {
+  world::FrameSource source(scene);
+  // The beat is found in organ time from 0, whatever part of it the clip shows (a loop
+  // starts after its settling beats: output.start_frame).
+  source.world().start_frame = 0;
+  const world::World& world = source.world();
+  PhysiologyReport report;
+  report.scene = scene.path;
+  const int organ = anatomical_organ(scene, world);
+  const world::OrganBody& body = world.organs[static_cast<std::size_t>(organ)];
+  report.organ = body.model.name;
+  const sim::RegionParams& ventricle = left_ventricle_drive(scene, body.model);
+  report.beat_s = 1.0 / ventricle.drive.rate_hz;
+  report.frame_s = world.frame_s;
+  report.measured_from_s = settle_beats * report.beat_s + ventricle.drive.delay_s;
+  const mesh::Anatomy& anatomy = body.geometry.mesh.anatomy;
+
+  // One frame before the beat to one after it: the valves need the flow on both sides.
+  const int first = static_cast<int>(std::floor(report.measured_from_s / world.frame_s)) - 1;
+  const int last = static_cast<int>(std::ceil((report.measured_from_s + report.beat_s) / world.frame_s)) + 1;
+  const HeartRecording rec = record_heart(source, organ, first, last);
+  const std::vector<int> beat = beat_frames(rec.times, report.measured_from_s, report.beat_s);
+  if (beat.size() < 2) {
+    throw Error(ExitCode::kUsage, scene.path + ": --physiology samples a beat at the scene's frames, and frames " +
+                                      std::to_string(world.frame_s) + " s apart leave fewer than two in a beat of " +
+                                      std::to_string(report.beat_s) + " s; raise output.fps");
+  }
+  const double aortic_closes = measure_valves(anatomy, body, rec, report);
+  const auto [ed, es] = measure_volumes(anatomy, rec, beat, aortic_closes, report);
+  measure_shape(anatomy, rec.shapes, beat, ed, es, report);
   return report;
 }
 

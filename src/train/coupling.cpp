@@ -3,7 +3,7 @@
 #include <Eigen/Dense>
 
 #include "sim/forces.h"
-#include "sim/solvers/step.h"
+#include "world/frame_source.h"
 
 namespace systole::train {
 
@@ -18,7 +18,9 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
 
   RecordedSignals rec;
   rec.contraction.assign(model.regions.size(), {});
-  sim::State state = sim::initial_state(model);
+  // The coupled body played alone; the recorder listens after every measured step.
+  world::BodyPlayback playback(model, problem.dt_s, &coupling);
+  const sim::State& state = playback.state();
   const int n = model.particle_count(), columns = static_cast<int>(fitted.size());
   std::vector<int> column_of(model.regions.size(), -1);
   for (int c = 0; c < columns; ++c) column_of[fitted[c]] = c;
@@ -26,9 +28,8 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
   const sim::Springs& sp = model.springs;
   Eigen::MatrixXd jacobian(3 * n, columns);
   double force_sum = 0;
-  for (int k = 0; k < problem.settle_steps + problem.measure_steps; ++k) {
-    sim::step(model, state, problem.dt_s, &coupling);
-    if (k < problem.settle_steps) continue;
+  playback.run(problem.settle_steps);
+  playback.run(problem.measure_steps, [&](int) {
     // Force of the attachments on each particle in the last substep (pinned ones have none).
     const Eigen::Matrix3Xd force = state.attachment_lambda / (h * h);
     jacobian.setZero();
@@ -61,7 +62,7 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
     }
     rec.times_s.push_back(state.time_s);
     force_sum += force.colwise().norm().sum() / n;
-  }
+  });
   rec.mean_coupling_force_N = force_sum / problem.measure_steps;
   return rec;
 }

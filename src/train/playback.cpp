@@ -7,7 +7,7 @@
 #include "sim/from_scene.h"
 #include "sim/motion_error.h"
 #include "sim/solvers/step.h"
-#include "world/world.h"
+#include "world/frame_source.h"
 
 namespace systole::train {
 namespace {
@@ -24,10 +24,10 @@ Problem make_problem(const scene::Scene& scene, std::size_t organ_index) {
   scene::Scene alone = scene;
   alone.organs = {scene.organs[organ_index]};
   alone.interactions.clear();
-  world::World world = world::build_world(alone);
-  world::OrganBody& body = world.organs.front();
+  world::FrameSource source(alone);
+  world::OrganBody& body = source.world().organs.front();
   const scene::Organ& organ = alone.organs.front();
-  Problem p{organ.name, std::move(body.model), world.dt_s, organ.target.rate_hz, 0, 0,
+  Problem p{organ.name, std::move(body.model), source.world().dt_s, organ.target.rate_hz, 0, 0,
             load_target(organ, body.geometry), {}, {}, {}, 0, {}};
   const double steps_per_cycle = 1.0 / (p.rate_hz * p.dt_s);
   p.settle_steps = static_cast<int>(std::lround(organ.target.settle_cycles * steps_per_cycle));
@@ -94,12 +94,72 @@ double first_harmonic_phase(const std::vector<double>& samples, double t0_s, dou
   return std::atan2(s, c);
 }
 
+namespace {
+
+/// The squared errors of a playback, summed over its measured steps.
+struct ErrorSums {
+  std::vector<double> region_sq;
+  std::vector<int> region_count;
+  double sq = 0, max_sq = 0, volume_sq = 0, mean_volume = 0;
+};
+
+/// Adds measured step k's errors of `state` against the target to `sums`, and each region's size to `e`.
+void add_step_errors(const Problem& problem, const sim::Model& model, const sim::State& state, int k, ErrorSums& sums,
+                     PlaybackError& e) {
+  const Eigen::Matrix3Xd& target = problem.target_at_step[k];
+  for (Eigen::Index i = 0; i < state.x.cols(); ++i) {
+    const double d2 = (state.x.col(i) - target.col(i)).squaredNorm();
+    sums.sq += d2;
+    sums.max_sq = std::max(sums.max_sq, d2);
+    const int r = model.vertex_region.empty() ? -1 : model.vertex_region[i];
+    if (r >= 0) sums.region_sq[r] += d2, ++sums.region_count[r];
+  }
+  if (model.volume.enabled) {
+    const double v = sim::enclosed_volume(state.x, model.volume.triangles);
+    sums.volume_sq += (v - problem.target_volume_m3[k]) * (v - problem.target_volume_m3[k]);
+    sums.mean_volume += problem.target_volume_m3[k];
+  }
+  const std::vector<double> sizes = region_sizes(model, state.x);
+  for (std::size_t r = 0; r < sizes.size(); ++r) e.size[r].push_back(sizes[r]);
+}
+
+/// The playback's figures from its summed errors: as shares of the motion and the diagonal,
+/// per region with the phase of its size.
+void summarize(const Problem& problem, const sim::Model& model, Eigen::Index particles, const ErrorSums& sums,
+               PlaybackError& e) {
+  const double to_percent = 100.0 / model.rest_extent_m;
+  const double samples = double(problem.measure_steps) * double(particles);
+  const double rms_m = std::sqrt(sums.sq / samples);
+  e.rms_pct_of_diagonal = rms_m * to_percent;
+  e.rms_pct_of_motion = share_of(rms_m, problem.target_motion_m);
+  e.max_pct_of_diagonal = std::sqrt(sums.max_sq) * to_percent;
+  if (model.volume.enabled && sums.mean_volume > 0) {
+    const double mean_volume = sums.mean_volume / problem.measure_steps;
+    e.volume_percent = std::sqrt(sums.volume_sq / problem.measure_steps) / mean_volume * 100.0;
+  }
+  const double t0 = problem.measure_start_s() + problem.dt_s;
+  for (std::size_t r = 0; r < model.regions.size(); ++r) {
+    // A region the target hardly moves (a thousandth of the organ's motion) has no motion
+    // to be a share of: NaN, which the report shows as "-".
+    if (sums.region_count[r] > 0 && problem.target_region_motion_m[r] < 1e-3 * problem.target_motion_m) {
+      e.regions[r].rms_pct_of_motion = std::numeric_limits<double>::quiet_NaN();
+    } else if (sums.region_count[r] > 0) {
+      e.regions[r].rms_pct_of_motion =
+          share_of(std::sqrt(sums.region_sq[r] / sums.region_count[r]), problem.target_region_motion_m[r]);
+    }
+    const double played = first_harmonic_phase(e.size[r], t0, problem.dt_s, problem.rate_hz);
+    const double wanted = first_harmonic_phase(problem.target_size[r], t0, problem.dt_s, problem.rate_hz);
+    e.regions[r].phase_deg = std::remainder(played - wanted, 2.0 * std::numbers::pi) * 180.0 / std::numbers::pi;
+  }
+}
+
+}  // namespace
+
 PlaybackError play(const Problem& problem, const sim::Model& model) {
   PlaybackError e;
   const std::size_t regions = model.regions.size();
   e.regions.assign(regions, {});
   e.size.assign(regions, {});
-  sim::State state = sim::initial_state(model);
   auto blew_up = [&] {
     e.diverged = true;
     e.rms_pct_of_motion = e.rms_pct_of_diagonal = e.max_pct_of_diagonal = e.volume_percent =
@@ -107,55 +167,13 @@ PlaybackError play(const Problem& problem, const sim::Model& model) {
     for (auto& r : e.regions) r.rms_pct_of_motion = std::numeric_limits<double>::infinity();
     return e;
   };
-  for (int k = 0; k < problem.settle_steps; ++k) sim::step(model, state, problem.dt_s);
-  if (sim::diagnose(model, state)) return blew_up();
-
-  std::vector<double> region_sq(regions, 0.0);
-  std::vector<int> region_count(regions, 0);
-  double sq = 0, volume_sq = 0, mean_volume = 0;
-  for (int k = 0; k < problem.measure_steps; ++k) {
-    sim::step(model, state, problem.dt_s);
-    const Eigen::Matrix3Xd& target = problem.target_at_step[k];
-    for (Eigen::Index i = 0; i < state.x.cols(); ++i) {
-      const double d2 = (state.x.col(i) - target.col(i)).squaredNorm();
-      sq += d2;
-      e.max_pct_of_diagonal = std::max(e.max_pct_of_diagonal, d2);
-      const int r = model.vertex_region.empty() ? -1 : model.vertex_region[i];
-      if (r >= 0) region_sq[r] += d2, ++region_count[r];
-    }
-    if (model.volume.enabled) {
-      const double v = sim::enclosed_volume(state.x, model.volume.triangles);
-      volume_sq += (v - problem.target_volume_m3[k]) * (v - problem.target_volume_m3[k]);
-      mean_volume += problem.target_volume_m3[k];
-    }
-    const std::vector<double> sizes = region_sizes(model, state.x);
-    for (std::size_t r = 0; r < regions; ++r) e.size[r].push_back(sizes[r]);
-  }
-  if (sim::diagnose(model, state) || !std::isfinite(sq)) return blew_up();
-
-  const double to_percent = 100.0 / model.rest_extent_m;
-  const double samples = double(problem.measure_steps) * double(state.x.cols());
-  const double rms_m = std::sqrt(sq / samples);
-  e.rms_pct_of_diagonal = rms_m * to_percent;
-  e.rms_pct_of_motion = share_of(rms_m, problem.target_motion_m);
-  e.max_pct_of_diagonal = std::sqrt(e.max_pct_of_diagonal) * to_percent;
-  if (model.volume.enabled && mean_volume > 0) {
-    mean_volume /= problem.measure_steps;
-    e.volume_percent = std::sqrt(volume_sq / problem.measure_steps) / mean_volume * 100.0;
-  }
-  const double t0 = problem.measure_start_s() + problem.dt_s;
-  for (std::size_t r = 0; r < regions; ++r) {
-    // A region the target hardly moves (a thousandth of the organ's motion) has no motion
-    // to be a share of: NaN, which the report shows as "-".
-    if (region_count[r] > 0 && problem.target_region_motion_m[r] < 1e-3 * problem.target_motion_m) {
-      e.regions[r].rms_pct_of_motion = std::numeric_limits<double>::quiet_NaN();
-    } else if (region_count[r] > 0) {
-      e.regions[r].rms_pct_of_motion = share_of(std::sqrt(region_sq[r] / region_count[r]), problem.target_region_motion_m[r]);
-    }
-    const double played = first_harmonic_phase(e.size[r], t0, problem.dt_s, problem.rate_hz);
-    const double wanted = first_harmonic_phase(problem.target_size[r], t0, problem.dt_s, problem.rate_hz);
-    e.regions[r].phase_deg = std::remainder(played - wanted, 2.0 * std::numbers::pi) * 180.0 / std::numbers::pi;
-  }
+  world::BodyPlayback playback(model, problem.dt_s);
+  playback.run(problem.settle_steps);
+  if (sim::diagnose(model, playback.state())) return blew_up();
+  ErrorSums sums{std::vector<double>(regions, 0.0), std::vector<int>(regions, 0)};
+  playback.run(problem.measure_steps, [&](int k) { add_step_errors(problem, model, playback.state(), k, sums, e); });
+  if (sim::diagnose(model, playback.state()) || !std::isfinite(sums.sq)) return blew_up();
+  summarize(problem, model, playback.state().x.cols(), sums, e);
   return e;
 }
 

@@ -194,7 +194,6 @@ void advance_to_frame(World& w, int frame) {
         throw Error(ExitCode::kDiverged, m.str());
       }
     }
-    if (w.after_frame) w.after_frame(w.frames_done + 1);
   }
 }
 

@@ -57,18 +57,16 @@ struct World {
   int start_frame = 0;      ///< Frames simulated before the clip's frame 0 (a loop's settling). unit: frames
   int frames_done = 0;      ///< Frames the world has been advanced through, counting start_frame.
   std::string step_reason;  ///< Why dt and substeps are what they are (for `validate`).
-  /// Called after every frame advance_to_frame steps through (with that frame's number),
-  /// also frames that are not rendered: a trace of a simulated signal needs them all.
-  std::function<void(int frame)> after_frame;
-  /// Called after every solver step of every organ (with the organ's index; its
-  /// state.time_s is the step's end): signals that need the simulation's own time
-  /// resolution, such as the heart sounds' timing (world/sound_sources.h).
+  /// Called after every solver step of every stepped organ (with the organ's index; its
+  /// state.time_s is the step's end). The frame source (world/frame_source.h) sets it to
+  /// call its listeners; consumers add theirs there (FrameSource::on_step).
   std::function<void(int organ, const OrganBody& body)> after_step;
   Eigen::Matrix3Xd scratch_positions;  ///< The health check's copy of a body's render positions.
   Coupling coupling;        ///< Contact between the organs (enabled: one coupled step for all).
 };
 
-/// Loads or generates every organ and builds its body. The step is the scene's dt (or, for
+/// Loads or generates every organ and builds its body. Under src/ only the frame source
+/// calls it (world/frame_source.h): every consumer shares that one run. The step is the scene's dt (or, for
 /// `dt: auto`, the longest every body allows: sim/step_size.h) rounded down so a whole
 /// number of steps makes one frame.
 World build_world(const scene::Scene& scene);

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "clip/bake.h"
+#include "world/frame_source.h"
 #include "clip/camera_framing.h"
 #include "clip/progress.h"
 #include "clip/render_clip.h"
@@ -146,16 +147,15 @@ TEST(OverlayPlan, LabelsInACutViewNameWhatTheCutKeeps) {
 
 TEST(OverlayPlan, VolumeTraceFallsAsTheVentriclesContractAndTheCursorMoves) {
   const scene::Scene s = labelled_heart();
-  world::World world = world::build_world(s);
+  world::FrameSource source(s);
+  const world::World& world = source.world();
   clip::OverlayPlan plan(s, world);
   ASSERT_EQ(plan.volume_organs(), std::vector<int>{0});
   Eigen::Matrix3Xd x;
-  auto record = [&](int frame) {
-    world::render_positions(world.organs[0], x);
+  source.on_frame([&](int frame) {
+    source.positions(0, x);
     plan.record_volume(0, frame, x);
-  };
-  record(0);
-  world.after_frame = record;
+  });
   std::size_t volume = 0;
   while (s.overlay.traces[volume].signal != scene::TraceSignal::kVolume) ++volume;
 
@@ -163,7 +163,7 @@ TEST(OverlayPlan, VolumeTraceFallsAsTheVentriclesContractAndTheCursorMoves) {
   const int ecg = volume == 0 ? 1 : 0;
   std::vector<double> values;
   for (int frame : {4, 10, 20}) {
-    world::advance_to_frame(world, frame);
+    source.advance_to(frame);
     const auto p = positions_now(world);
     Image image(kWidth, kHeight);
     plan.draw(image, capture(plan, frame, p));

@@ -12,6 +12,7 @@
 
 #include "clip/render_clip.h"
 #include "clip/text_tracks.h"
+#include "encode/png.h"
 #include "scene/load.h"
 #include "support/run.h"
 #include "support/small_heart_clip.h"
@@ -306,6 +307,37 @@ TEST(Sound, WavIsTheSoundtrackAloneAndGifHasNone) {
   EXPECT_EQ(q.exit_code, 64) << q.output;
   EXPECT_NE(q.output.find("has no audio: section"), std::string::npos) << q.output;
   EXPECT_FALSE(fs::exists(dir / "q.wav"));
+}
+
+TEST(Sound, AClipWithAudioStepsTheSimulationOncePerStepOfTheClip) {
+  // The soundtrack listens to the clip's own run: the pictures replay the frames it kept,
+  // so the steps are the clip's and the half second past its end that confirms the last
+  // sounds - not the clip twice, as when the sound ran a simulation of its own.
+  const fs::path dir = scratch("one_run");
+  write_file(dir / "h.yaml", small_heart_scene("duration: 1 s", kTracks));
+  const scene::Scene s = scene::load(dir / "h.yaml");
+  const world::World w = world::build_world(s);
+  const int frames = s.output.frame_count();
+  const int extra = static_cast<int>(std::ceil(0.5 / w.frame_s));  // clip/soundtrack.h
+  const long long steps_per_frame = w.steps_per_frame * static_cast<long long>(w.organs.size());
+  clip::RenderRequest with_sound;
+  with_sound.video = dir / "h.mp4";
+  const clip::StageTimes heard = clip::render_clip(s, with_sound);
+  EXPECT_EQ(heard.steps, (frames + extra - 1) * steps_per_frame);
+  EXPECT_LT(heard.steps, 2 * (frames - 1) * steps_per_frame);
+  clip::RenderRequest silent;
+  silent.png_dir = dir / "png";  // No video: no soundtrack.
+  const clip::StageTimes quiet = clip::render_clip(s, silent);
+  EXPECT_EQ(quiet.steps, (frames - 1) * steps_per_frame);
+  // Replayed or simulated alongside the pictures, the frames are the same bits.
+  clip::RenderRequest both;
+  both.video = dir / "h2.mp4";
+  both.png_dir = dir / "png2";
+  clip::render_clip(s, both);
+  for (int f : {0, frames / 2, frames - 1}) {
+    const std::string name = encode::frame_file_name(f, frames);
+    EXPECT_EQ(read_file(dir / "png2" / name), read_file(dir / "png" / name)) << name;
+  }
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include <regex>
 #include <tiny_gltf.h>
 
-#include "clip/bake.h"
+#include "world/bake.h"
 #include "support/run.h"
 
 namespace systole::test {
@@ -58,7 +58,7 @@ TEST(ExportCommand, EveryFrameAsAMorphTargetIsTheSimulationToFloatRounding) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("every frame a morph target, 12 frames"), std::string::npos) << r.output;
   const auto m = load_glb(dir / "h.glb");
-  clip::BakeReader bake(dir / "h.bake");
+  world::BakeReader bake(dir / "h.bake");
   const auto& prim = m.meshes.at(0).primitives.at(0);
   ASSERT_EQ(prim.targets.size(), std::size_t(bake.info().frame_count));
   const Eigen::Matrix3Xd base = positions(m, prim.attributes.at("POSITION"));
