@@ -6,26 +6,33 @@
 # other module of src/. External libraries are confined by SYSTOLE_EXTERNAL below.
 set(SYSTOLE_MODULES
   "common:"
-  "scene:common"
-  "mesh:common,scene"
-  "sim:common,mesh"
-  "world:common,scene,mesh,sim"
-  "train:common,scene,mesh,sim,world,chart"
+  "physics:"
+  "scene:common,physics"
+  "mesh:common,physics,scene"
+  "sim:common,physics,mesh"
+  "world:common,physics,scene,mesh,sim"
+  "train:common,physics,scene,mesh,sim,world,chart"
   "chart:common"
   "plot:common,chart"
-  "render:common,scene,mesh"
+  "render:common,physics,scene,mesh"
   "encode:common"
   "audio:common"
-  "overlay:common,scene,chart,plot"
-  "clip:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio"
-  "batch:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
-  "study:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
-  "export:common,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
-  "cli:common,scene,mesh,sim,world,train,chart,plot,render,encode,overlay,audio,clip,batch,study,export")
+  "overlay:common,physics,scene,chart,plot"
+  "clip:common,physics,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio"
+  "batch:common,physics,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
+  "study:common,physics,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
+  "export:common,physics,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
+  "cli:common,physics,scene,mesh,sim,world,train,chart,plot,render,encode,overlay,audio,clip,batch,study,export")
 
 # The one place the simulator meets the scene: the translation of a scene into sim's own
 # parameter structs. No other file under src/sim/ may include scene/.
 set(SYSTOLE_SIM_SCENE_BRIDGE "sim/from_scene.h" "sim/from_scene.cpp")
+
+# The physics value types scene and sim share: each is declared once, in physics/, and
+# used elsewhere through a using-declaration (`using physics::Drive;`), never copied.
+# tests/architecture/CheckOneHome.cmake (test architecture.one_home) enforces it.
+set(SYSTOLE_PHYSICS_HOME "physics")
+set(SYSTOLE_PHYSICS_TYPES Waveform Harmonic Drive PathKey InteractionKind Floor)
 
 # "library:module,..." - the modules whose libraries may link an external library, directly
 # or through another module. train must never reach OSMesa, libav* or FreeType.
@@ -75,6 +82,21 @@ function(systole_allowed_closure module out)
   set(${out} "${closure}" PARENT_SCOPE)
 endfunction()
 
+# What `target` links: LINK_LIBRARIES, or INTERFACE_LINK_LIBRARIES for a header-only
+# (INTERFACE) library such as systole_physics, which has only those.
+function(systole_direct_links target out)
+  get_target_property(type ${target} TYPE)
+  if(type STREQUAL "INTERFACE_LIBRARY")
+    get_target_property(links ${target} INTERFACE_LINK_LIBRARIES)
+  else()
+    get_target_property(links ${target} LINK_LIBRARIES)
+  endif()
+  if(NOT links)
+    set(links "")
+  endif()
+  set(${out} "${links}" PARENT_SCOPE)
+endfunction()
+
 # Every systole_<module> library reachable from `target` through its link libraries.
 function(systole_link_closure target out)
   set(seen "")
@@ -84,10 +106,7 @@ function(systole_link_closure target out)
     if(NOT TARGET ${current})
       continue()
     endif()
-    get_target_property(links ${current} LINK_LIBRARIES)
-    if(NOT links)
-      continue()
-    endif()
+    systole_direct_links(${current} links)
     foreach(link IN LISTS links)
       if(link MATCHES "^systole_" AND NOT link IN_LIST seen)
         list(APPEND seen ${link})
@@ -115,7 +134,7 @@ function(systole_check_links)
         string(APPEND violations "  systole_${module} links ${library}; ${module} may use only: ${allowed}\n")
       endif()
     endforeach()
-    get_target_property(direct systole_${module} LINK_LIBRARIES)
+    systole_direct_links(systole_${module} direct)
     foreach(row2 IN LISTS SYSTOLE_EXTERNAL)
       string(REGEX MATCH "^(.*):([a-z]+)$" _ "${row2}")
       set(external ${CMAKE_MATCH_1})

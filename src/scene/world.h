@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/world.h"
 #include "scene/drive.h"
 #include "scene/origin.h"
 
@@ -75,10 +76,7 @@ struct Light {
 // ---------------------------------------------------------------------------------------
 // Scripted interactions and contact.
 
-enum class InteractionKind {
-  kPoke,  ///< A force on the vertices near a point, over an interval.
-  kGrab,  ///< The vertices near a point follow a handle along a path, then are let go.
-};
+using physics::InteractionKind;  ///< Poke or grab (physics/world.h).
 
 struct Interaction {
   InteractionKind kind = InteractionKind::kPoke;
@@ -116,11 +114,6 @@ struct Contact {
   Origin origin;
 };
 
-/// A plane the organs cannot pass (a table, the diaphragm's floor).
-struct Floor {
-  bool enabled = false;
-  Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  ///< A point on the plane. unit: m
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< Points to the free side (normalised). unit: 1
-};
+using physics::Floor;  ///< A plane the organs cannot pass (physics/world.h).
 
 }  // namespace systole::scene

@@ -3,34 +3,15 @@
 namespace systole::sim {
 namespace {
 
-std::vector<PathKey> path_params(const std::vector<scene::PathKey>& keys) {
-  std::vector<PathKey> out;
-  out.reserve(keys.size());
-  for (const auto& k : keys) out.push_back({k.time_s, k.position_m});
-  return out;
-}
-
 /// "file:line:column" of a scene entry, or "" when it came from no file.
 std::string where(const scene::Origin& at) {
   if (at.file.empty()) return "";
   return at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column);
 }
 
-Waveform waveform_params(scene::Waveform w) {
-  switch (w) {
-    case scene::Waveform::kNone: return Waveform::kNone;
-    case scene::Waveform::kSine: return Waveform::kSine;
-    case scene::Waveform::kFourier: return Waveform::kFourier;
-    case scene::Waveform::kCardiac: return Waveform::kCardiac;
-    case scene::Waveform::kBreathing: return Waveform::kBreathing;
-    case scene::Waveform::kSamples: return Waveform::kSamples;
-  }
-  return Waveform::kNone;
-}
-
 InteractionParams interaction_params(const scene::Interaction& in, std::size_t index) {
   InteractionParams p;
-  p.kind = in.kind == scene::InteractionKind::kGrab ? InteractionKind::kGrab : InteractionKind::kPoke;
+  p.kind = in.kind;
   p.where = where(in.origin);
   p.key = "interactions[" + std::to_string(index) + "]." + (p.kind == InteractionKind::kGrab ? "grab" : "poke");
   p.at_m = in.at_m;
@@ -38,8 +19,8 @@ InteractionParams interaction_params(const scene::Interaction& in, std::size_t i
   p.force_N = in.force_N;
   p.start_s = in.start_s;
   p.duration_s = in.duration_s;
-  p.drive = drive_params(in.drive);
-  p.path = path_params(in.path);
+  p.drive = in.drive;
+  p.path = in.path;
   p.stiffness_N_per_m = in.stiffness_N_per_m;
   return p;
 }
@@ -56,25 +37,8 @@ Method method_params(scene::SolverMethod method) {
   return Method::kXpbd;
 }
 
-Drive drive_params(const scene::Drive& d) {
-  Drive out;
-  out.waveform = waveform_params(d.waveform);
-  out.rate_hz = d.rate_hz;
-  out.rate_end_hz = d.rate_end_hz;
-  out.amplitude = d.amplitude;
-  out.phase_rad = d.phase_rad;
-  out.delay_s = d.delay_s;
-  for (const auto& h : d.harmonics) out.harmonics.push_back({h.amplitude, h.phase_rad});
-  out.systolic_fraction = d.systolic_fraction;
-  out.peak_fraction = d.peak_fraction;
-  out.inhale_fraction = d.inhale_fraction;
-  out.samples = d.samples;
-  out.irregularity = d.irregularity;
-  return out;
-}
-
 RegionParams region_params(const scene::Region& r) {
-  RegionParams p{r.name, drive_params(r.drive), r.stiffness_scale, r.damping_scale, r.pinned, r.detail, path_params(r.motion)};
+  RegionParams p{r.name, r.drive, r.stiffness_scale, r.damping_scale, r.pinned, r.detail, r.motion};
   if (r.tether.enabled) {
     p.tether_stiffness_N_per_m = r.tether.stiffness_N_per_m;
     p.tether_offset_m = r.tether.offset_m;
@@ -95,7 +59,7 @@ OrganParams organ_params(const scene::Organ& organ) {
   p.where = organ.origin.file.empty() ? "" : where(organ.origin) + ": ";
   const scene::Body& b = organ.body;
   p.body = {b.mass_kg, b.stiffness_N_per_m, b.damping_s, b.volume_stiffness_Pa, b.drag_per_s,
-            b.bending_N_per_m, b.lattice, drive_params(b.volume_drive), b.fibre_tension};
+            b.bending_N_per_m, b.lattice, b.volume_drive, b.fibre_tension};
   const scene::Blood& blood = organ.blood;
   p.blood.enabled = blood.enabled;
   p.blood.aortic_Pa = blood.aortic_pressure_Pa;
@@ -117,7 +81,7 @@ ModelOptions model_options(const scene::Scene& scene, const std::string& organ_n
   const double frame_s = scene.output.frame_period_s();
   options.clip_s = scene.output.start_frame * frame_s + scene.output.duration_s;  // Organ time at the clip's end.
   options.seed = scene.seed;
-  options.floor = {scene.floor.enabled, scene.floor.point_m, scene.floor.normal};
+  options.floor = scene.floor;
   for (std::size_t i = 0; i < scene.interactions.size(); ++i) {
     if (scene.interactions[i].organ == organ_name) options.interactions.push_back(interaction_params(scene.interactions[i], i));
   }

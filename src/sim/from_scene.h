@@ -1,8 +1,10 @@
 #pragma once
 // The one place the simulator meets the scene: a validated scene (scene/) translated into
-// the simulator's own parameters (sim/params.h). Nothing else under src/sim/ includes
-// scene/ (cmake/Architecture.cmake checks it), so the solvers never recompile for a scene
-// change that is not theirs.
+// the simulator's own parameters (sim/params.h). The value types both share (drives, path
+// keys, the floor, an interaction's kind: physics/) pass through as they are; what differs
+// (names, where an entry was written, the clip's length) is translated here. Nothing else
+// under src/sim/ includes scene/ (cmake/Architecture.cmake checks it), so the solvers
+// never recompile for a scene change that is not theirs.
 
 #include <string>
 #include <vector>
@@ -14,7 +16,6 @@
 namespace systole::sim {
 
 Method method_params(scene::SolverMethod method);
-Drive drive_params(const scene::Drive& drive);
 RegionParams region_params(const scene::Region& region);
 std::vector<RegionParams> region_params(const std::vector<scene::Region>& regions);
 OrganParams organ_params(const scene::Organ& organ);

@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "physics/drive.h"
+#include "physics/world.h"
+
 namespace systole::sim {
 
 enum class Method { kXpbd, kExplicit, kImplicit, kProjective };
@@ -24,42 +27,12 @@ inline const char* method_name(Method m) {
   return "unknown";
 }
 
-/// The periodic activation phi(t) that shortens a region's springs,
-/// L(t) = L0 (1 - amplitude phi(t - delay)); sim/drive.h evaluates it.
-enum class Waveform {
-  kNone,       ///< No drive: the region is passive.
-  kSine,       ///< phi = (1 - cos(2 pi f t + phase)) / 2.
-  kFourier,    ///< phi = 1/2 + sum_k a_k cos(2 pi k f t + phase_k), harmonics from k = 1.
-  kCardiac,    ///< Raised-cosine contraction over the systolic fraction of each beat, peaking at peak_fraction of it.
-  kBreathing,  ///< Asymmetric: raised-cosine inhale over inhale_fraction, slower exhale.
-  kSamples,    ///< A table of phi over one period, interpolated periodically.
-};
-
-struct Harmonic {
-  double amplitude = 0;  ///< Relative to the drive amplitude. unit: 1
-  double phase_rad = 0;  ///< unit: rad
-};
-
-struct Drive {
-  Waveform waveform = Waveform::kNone;
-  double rate_hz = 0;               ///< Cycles per second at the start of the clip. unit: Hz
-  double rate_end_hz = 0;           ///< When > 0, the rate ramps linearly to this by the clip's end. unit: Hz
-  double amplitude = 0;             ///< Fraction of rest length removed at phi = 1. unit: 1
-  double phase_rad = 0;             ///< unit: rad
-  double delay_s = 0;               ///< Activation delay. unit: s
-  std::vector<Harmonic> harmonics;  ///< kFourier: harmonic k = index + 1.
-  double systolic_fraction = 0.35;  ///< kCardiac: part of the period spent contracting. unit: 1
-  double peak_fraction = 0.5;       ///< kCardiac: where in that part the contraction peaks. unit: 1
-  double inhale_fraction = 0.4;     ///< kBreathing: part of the period spent inhaling. unit: 1
-  std::vector<double> samples;      ///< kSamples: phi over one period, evenly spaced.
-  double irregularity = 0;          ///< Seeded beat-to-beat jitter of the period (0 = regular). unit: 1
-};
-
-/// A position at a time, interpolated by a Catmull-Rom curve between keys (common/spline.h).
-struct PathKey {
-  double time_s = 0;                                     ///< unit: s
-  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< unit: m
-};
+/// The drive (its waveform, its harmonics) and path keys are declared once, for the scene
+/// and the simulator alike (physics/drive.h), so the bridge has nothing to copy field by field.
+using physics::Drive;
+using physics::Harmonic;
+using physics::PathKey;
+using physics::Waveform;
 
 /// A region's own rhythm and material.
 struct RegionParams {
@@ -109,7 +82,7 @@ struct OrganParams {
   std::vector<RegionParams> regions;
 };
 
-enum class InteractionKind { kPoke, kGrab };
+using physics::InteractionKind;  ///< Poke or grab (physics/world.h).
 
 /// A scripted push or grab of the particles near a point.
 struct InteractionParams {
@@ -126,12 +99,7 @@ struct InteractionParams {
   double stiffness_N_per_m = 2000;                    ///< kGrab: per particle. unit: N/m
 };
 
-/// A plane the body cannot pass.
-struct Floor {
-  bool enabled = false;
-  Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  ///< unit: m
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  ///< Points to the free side (normalised). unit: 1
-};
+using physics::Floor;  ///< A plane the body cannot pass (physics/world.h).
 
 /// The solver settings.
 struct SolverParams {
