@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <ostream>
 #include <vector>
 
 #include "sim/solvers/explicit_euler.h"
@@ -26,6 +27,9 @@ struct Solver {
   Kernel step;
   int substeps;
 };
+
+// Named by its name in test names (not as the bytes of its pointers).
+void PrintTo(const Solver& s, std::ostream* os) { *os << s.name; }
 
 const Solver kSolvers[] = {{"explicit", explicit_step, 40}, {"xpbd", xpbd, 20}, {"projective", projective_step, 1}};
 
