@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "batch/manifest.h"
+#include "encode/video_writer.h"
 #include "world/bake.h"
 #include "clip/frame_list.h"
 #include "clip/video_format.h"
@@ -54,7 +55,11 @@ std::vector<fs::path> expand_scene_inputs(const std::vector<std::string>& inputs
     } else if (fs::is_directory(in, ec)) {
       std::vector<fs::path> found;
       for (const auto& entry : fs::directory_iterator(in)) {
-        if (entry.is_regular_file() && is_scene_file(entry.path())) found.push_back(entry.path());
+        if (!is_scene_file(entry.path())) continue;
+        // A scene entry whose kind cannot be read (a symlink loop, a dangling link) is still
+        // a job: it fails alone, with its own exit code, and the others render.
+        std::error_code unreadable;
+        if (entry.is_regular_file(unreadable) || unreadable) found.push_back(entry.path());
       }
       if (found.empty()) throw Error(ExitCode::kNoInput, "folder '" + in + "' holds no scene (*.yaml, *.yml)");
       std::sort(found.begin(), found.end());
@@ -271,6 +276,14 @@ clip::RenderRequest plan_request(const Job& job, const scene::Scene& scene, cons
   clip::RenderRequest request;
   const fs::path& o = options.output;
   std::error_code ec;
+  // "-o out/d.mp4/" names a folder by its slash and a video by its name: say so rather than
+  // make a folder called d.mp4.
+  if (!o.empty() && !o.has_filename() && encode::video_format_of(o.parent_path()) && !fs::is_directory(o, ec)) {
+    throw Error(ExitCode::kUsage, "-o " + o.string() + ": the '/' at its end names a folder, but '" +
+                                      o.parent_path().filename().string() +
+                                      "' is a video's name; drop the '/' to write that video, or name the folder without "
+                                      "a video's extension");
+  }
   const bool output_is_folder = !o.empty() && (options.several || fs::is_directory(o, ec) || !o.has_filename());
   const std::string extension = clip::default_video_path(scene).extension().string();
   const fs::path named_video = output_is_folder ? o / (job.name + (extension.empty() ? ".mp4" : extension)) : o;

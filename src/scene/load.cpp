@@ -2,8 +2,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <cstdint>
 #include <fstream>
-#include <sstream>
+#include <string>
 
 #include "common/error.h"
 #include "common/input_file.h"
@@ -13,16 +14,41 @@
 
 namespace systole::scene {
 
+namespace {
+
+/// `size`: the file's size, as the system gives it ("4294967296 bytes"), or as far as it was read ("over ...").
+[[noreturn]] void too_large(const std::filesystem::path& file, const std::string& size) {
+  fail(Origin{file.string(), 0, 0}, "",
+       "is " + size + " bytes; a scene may be at most " + std::to_string(kMaxSceneBytes) +
+           " (meshes and targets belong in files of their own)");
+}
+
+/// The scene file's text. Its size is checked before reading, and at most one chunk past
+/// the limit is ever read (a file that grows, or one whose size the system does not know),
+/// so a huge file costs neither its size in memory nor the time to read it.
+std::string read_scene_text(const std::filesystem::path& file) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (!ec && size > kMaxSceneBytes) too_large(file, std::to_string(size));
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error(ExitCode::kNoInput, file.string() + ": cannot open scene file: " + std::strerror(errno));
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSceneBytes) too_large(file, "over " + std::to_string(kMaxSceneBytes));
+  }
+  if (in.bad()) throw Error(ExitCode::kIoError, file.string() + ": reading the scene file failed");
+  return text;
+}
+
+}  // namespace
+
 Scene load(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   if (const auto reason = unreadable_file_reason(file)) {
     throw Error(ExitCode::kNoInput, file.string() + ": cannot read the scene file: it is " + *reason);
   }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error(ExitCode::kNoInput, file.string() + ": cannot open scene file: " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw Error(ExitCode::kIoError, file.string() + ": reading the scene file failed");
-  return load_from_string(text.str(), file.string(), overrides);
+  return load_from_string(read_scene_text(file), file.string(), overrides);
 }
 
 Scene load_from_string(std::string_view yaml, const std::string& file_label, const std::vector<std::string>& overrides) {

@@ -104,6 +104,21 @@ TEST(Batch, ABadSceneFailsAloneAndTheExitCodeSaysSo) {
   EXPECT_NE(r.output.find("3 jobs: 2 done, 0 skipped, 1 failed"), std::string::npos) << r.output;
 }
 
+TEST(Batch, ASymlinkLoopInAFolderFailsItsJobAloneWithItsOwnExitCode) {
+  const auto dir = two_scenes("symlink_loop");
+  fs::create_symlink("loop.yaml", dir / "scenes" / "loop.yaml");
+  fs::create_symlink("loop.glb", dir / "scenes" / "loop.glb");
+  const auto alone = run(systole() + " render " + (dir / "scenes" / "loop.yaml").string() + kTiny + "-o " +
+                         (dir / "alone.mp4").string());
+  ASSERT_NE(alone.exit_code, 0) << alone.output;
+  ASSERT_NE(alone.exit_code, 70) << "not an internal error:\n" << alone.output;
+  const auto r = run(systole() + " render " + (dir / "scenes").string() + kTiny + "-o " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, alone.exit_code) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "out" / "one.mp4")) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "out" / "two.mp4")) << r.output;
+  EXPECT_NE(r.output.find("3 jobs: 2 done, 0 skipped, 1 failed"), std::string::npos) << r.output;
+}
+
 /// Starts `command` in the background, waits for a temporary output to appear under
 /// `dir`, sends `signal` to it, and returns its exit status.
 RunResult kill_mid_render(const std::string& command, const fs::path& dir, const char* signal) {

@@ -75,6 +75,15 @@ TEST(Sweep, FoldersAndGlobsExpandSorted) {
   EXPECT_THROW(expand_jobs({(dir / "*.json").string()}, {}), Error);
 }
 
+TEST(Sweep, AFolderEntryThatCannotBeReadIsAJobOfItsOwnAndOtherEntriesAreSkipped) {
+  const auto dir = scratch("expand_loops");
+  write_file(dir / "a.yaml", "");
+  fs::create_symlink("loop.yaml", dir / "loop.yaml");  // A symlink loop: stat says ELOOP.
+  fs::create_symlink("mesh.glb", dir / "mesh.glb");    // Not a scene: never looked at.
+  fs::create_symlink("gone.yaml", dir / "dangling.yaml.bak");
+  EXPECT_EQ(names(expand_jobs({dir.string()}, {})), (std::vector<std::string>{"a", "loop"}));
+}
+
 TEST(Shard, ShardsPartitionTheJobListExactly) {
   const auto jobs = expand_jobs({"s.yaml"}, {"seed=1,2,3,4,5,6,7", "output.fps=24,30"});
   ASSERT_EQ(jobs.size(), 14u);

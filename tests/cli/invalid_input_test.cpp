@@ -237,6 +237,18 @@ TEST(InvalidInput, OutputIntoAMissingOrReadOnlyFolderIsCannotCreate) {
   fs::permissions(ro.dir, fs::perms::owner_write, fs::perm_options::add);
 }
 
+TEST(InvalidInput, AVideoNameEndingInASlashIsRefusedNotMadeAFolder) {
+  const Project p("output_video_slash", "organs: [{name: heart, mesh: {procedural: heart, detail: 1}}]\n" + kTiny);
+  const RunResult r = run(systole() + " render " + quoted(p.scene) + " -o " + quoted(p.dir / "out" / "d.mp4") + "/");
+  expect_rejected(p, r, 64, "'d.mp4' is a video's name; drop the '/'");
+  EXPECT_FALSE(fs::exists(p.dir / "out")) << "no folder named after a video";
+  // A folder that really is named so is still a folder.
+  fs::create_directories(p.dir / "clips.mp4");
+  const RunResult folder = run(systole() + " render " + quoted(p.scene) + " -o " + quoted(p.dir / "clips.mp4") + "/");
+  EXPECT_EQ(folder.exit_code, 0) << folder.output;
+  EXPECT_TRUE(fs::exists(p.dir / "clips.mp4" / "scene.mp4")) << folder.output;
+}
+
 TEST(InvalidInput, UnreadableSceneAndMeshAreNoInput) {
   const Project p("unreadable", mesh_scene("organ.obj"));
   write_file(p.dir / "organ.obj", tetrahedra(1, false, false));

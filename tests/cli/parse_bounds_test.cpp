@@ -94,5 +94,34 @@ TEST(ParseBounds, HostileScenesAreRefusedWithinTwoSecondsAndTwoHundredMegabytes)
   expect_refused_cheaply("a megabyte of nesting", measure({"validate", (dir / "deep.yaml").string()}));
 }
 
+TEST(ParseBounds, LongDefineValuesCostMemoryInProportionAndAreNotEchoedWhole) {
+  const fs::path dir = scratch("parse_bounds_define");
+  write_file(dir / "plain.yaml", kOrgans);
+  std::string list = "camera.position=[";
+  for (int k = 0; k < 20000; ++k) list += "1, ";
+  list += "1]";
+  expect_refused_cheaply("a -D list of 20,000 items", measure({"validate", (dir / "plain.yaml").string(), "-D", list}));
+  std::string map = "camera={";
+  for (int k = 0; k < 9000; ++k) map += "key" + std::to_string(k) + ": 1, ";
+  map += "end: 1}";
+  expect_refused_cheaply("a -D map of 9,000 keys", measure({"validate", (dir / "plain.yaml").string(), "-D", map}));
+  const auto r = run(systole() + " validate " + (dir / "plain.yaml").string() + " -D '" + map + "'");
+  EXPECT_EQ(r.exit_code, 65) << r.output.substr(0, 500);
+  EXPECT_NE(r.output.find("-D camera={key0: 1, key1: 1,"), std::string::npos) << r.output.substr(0, 500);
+  EXPECT_NE(r.output.find("(" + std::to_string(map.size()) + " characters)"), std::string::npos) << r.output.substr(0, 500);
+  EXPECT_EQ(r.output.find("key8999"), std::string::npos) << "the value is not echoed whole";
+}
+
+TEST(ParseBounds, AHugeSceneFileIsRefusedByItsSizeBeforeItIsRead) {
+  const fs::path dir = scratch("parse_bounds_huge");
+  const fs::path huge = dir / "huge.yaml";
+  write_file(huge, kOrgans);
+  fs::resize_file(huge, std::uintmax_t{4} << 30);  // Sparse: 4 GiB that take no disk.
+  expect_refused_cheaply("a 4 GiB scene file", measure({"validate", huge.string()}));
+  const auto r = run(systole() + " validate " + huge.string());
+  EXPECT_NE(r.output.find(huge.string() + ": is 4294967296 bytes; a scene may be at most 16777216"), std::string::npos)
+      << r.output;
+}
+
 }  // namespace
 }  // namespace systole::test
