@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 
 #include "common/atomic_output.h"
-#include "common/error.h"
 
 namespace systole::audio {
 namespace {
@@ -46,16 +44,7 @@ std::string wav_bytes(const Soundtrack& track) {
 }
 
 void write_wav(const std::filesystem::path& target, const Soundtrack& track) {
-  AtomicOutput output(target);
-  {
-    std::ofstream file(output.temp_path(), std::ios::binary);
-    if (!file) throw Error(ExitCode::kCannotCreate, "cannot create '" + output.temp_path().string() + "'");
-    const std::string bytes = wav_bytes(track);
-    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    file.close();
-    if (!file) throw Error(ExitCode::kIoError, "cannot write '" + output.temp_path().string() + "'");
-  }
-  output.commit();
+  write_file_atomically(target, wav_bytes(track));
 }
 
 }  // namespace systole::audio

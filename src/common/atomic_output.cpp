@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstring>
 #include <ctime>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <set>
@@ -260,6 +261,22 @@ void AtomicOutput::commit() {
   }
   committed_ = true;
   release();
+}
+
+void write_atomically(const fs::path& target, const std::function<void(std::ostream&)>& fill) {
+  AtomicOutput output(target);
+  {
+    std::ofstream out(output.temp_path(), std::ios::binary);
+    if (!out) throw Error(ExitCode::kCannotCreate, "cannot create '" + target.string() + "'");
+    fill(out);
+    out.close();
+    if (!out) throw Error(ExitCode::kIoError, "cannot write '" + target.string() + "' (disk full?)");
+  }
+  output.commit();
+}
+
+void write_file_atomically(const fs::path& target, std::string_view bytes) {
+  write_atomically(target, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
 }
 
 void remove_pending_outputs_signal_safe() {

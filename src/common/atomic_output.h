@@ -16,6 +16,9 @@
 // sweep_stale_outputs(), remove it.
 
 #include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string_view>
 
 namespace systole {
 
@@ -49,6 +52,16 @@ class AtomicOutput {
   int temp_slot_ = -1;  // Entries in the signal-safe table of pending files.
   int lock_slot_ = -1;
 };
+
+/// Writes the file `target` whole or not at all, its contents streamed by `fill` into an
+/// AtomicOutput's temporary (a large file need not sit in memory whole). Throws
+/// Error(kCannotCreate) when the folder cannot take it, Error(kBusy) when another writer
+/// holds it, Error(kIoError) when writing fails part-way; whatever `fill` throws passes
+/// through. On any failure the earlier target stays and no temporary is left.
+void write_atomically(const std::filesystem::path& target, const std::function<void(std::ostream&)>& fill);
+
+/// The same with the contents in memory.
+void write_file_atomically(const std::filesystem::path& target, std::string_view bytes);
 
 /// The lock file that guards `target`: `.<name>.lock` beside it.
 std::filesystem::path lock_path_of(const std::filesystem::path& target);

@@ -2,10 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 #include "common/atomic_output.h"
-#include "common/error.h"
 
 namespace systole::encode {
 
@@ -32,16 +30,7 @@ std::string webvtt_text(const std::vector<TextCue>& cues) {
 }
 
 void write_webvtt(const std::filesystem::path& target, const std::vector<TextCue>& cues) {
-  AtomicOutput output(target);
-  {
-    std::ofstream file(output.temp_path(), std::ios::binary);
-    if (!file) throw Error(ExitCode::kCannotCreate, "cannot create '" + output.temp_path().string() + "'");
-    const std::string text = webvtt_text(cues);
-    file.write(text.data(), static_cast<std::streamsize>(text.size()));
-    file.close();
-    if (!file) throw Error(ExitCode::kIoError, "cannot write '" + output.temp_path().string() + "'");
-  }
-  output.commit();
+  write_file_atomically(target, webvtt_text(cues));
 }
 
 }  // namespace systole::encode

@@ -7,8 +7,8 @@
 
 #include <tiny_gltf.h>
 
+#include "common/atomic_output.h"
 #include "common/error.h"
-#include "export/write_file.h"
 
 namespace systole::exporter {
 namespace {

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/atomic_output.h"
 #include "common/error.h"
 #include "export/base64.h"
 #include "export/viewer_assets.h"
-#include "export/write_file.h"
 #include "render/camera_matrices.h"
 #include "common/xml.h"
 

@@ -1,10 +1,11 @@
+#include "common/atomic_output.h"
 #include "export/point_cache.h"
-#include "export/write_file.h"
+#include "export/byte_order.h"
 
 namespace systole::exporter {
 
 void write_mdd(const std::filesystem::path& file, const OrganTrack& organ, double fps) {
-  write_stream_atomically(file, [&](std::ostream& out) {
+  write_atomically(file, [&](std::ostream& out) {
     const auto frames = static_cast<std::uint32_t>(organ.frames_m.size());
     put_be32(out, frames);
     put_be32(out, static_cast<std::uint32_t>(organ.vertex_count()));

@@ -1,12 +1,12 @@
 #include <cstdio>
 
+#include "common/atomic_output.h"
 #include "export/point_cache.h"
-#include "export/write_file.h"
 
 namespace systole::exporter {
 
 void write_obj(const std::filesystem::path& file, const OrganTrack& organ) {
-  write_stream_atomically(file, [&](std::ostream& out) {
+  write_atomically(file, [&](std::ostream& out) {
     out << "# " << organ.name << ": the rest mesh of Systole's point caches (metres, Y up)\n";
     out << "o " << organ.name << "\n";
     char line[128];

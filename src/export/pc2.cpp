@@ -1,12 +1,13 @@
 #include <cstring>
 
+#include "common/atomic_output.h"
 #include "export/point_cache.h"
-#include "export/write_file.h"
+#include "export/byte_order.h"
 
 namespace systole::exporter {
 
 void write_pc2(const std::filesystem::path& file, const OrganTrack& organ) {
-  write_stream_atomically(file, [&](std::ostream& out) {
+  write_atomically(file, [&](std::ostream& out) {
     out.write("POINTCACHE2\0", 12);
     put_le32(out, 1);  // version
     put_le32(out, static_cast<std::uint32_t>(organ.vertex_count()));

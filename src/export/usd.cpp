@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "export/write_file.h"
+#include "common/atomic_output.h"
 
 namespace systole::exporter {
 namespace {
@@ -72,7 +72,7 @@ void mesh(std::ostream& out, const OrganTrack& organ) {
 }  // namespace
 
 void write_usda(const std::filesystem::path& file, const Recording& rec) {
-  write_stream_atomically(file, [&](std::ostream& out) {
+  write_atomically(file, [&](std::ostream& out) {
     out << "#usda 1.0\n(\n    defaultPrim = \"" << prim_name(rec.scene_name) << "\"\n";
     out << "    doc = \"Systole: " << rec.scene_name << ", " << rec.frame_count() << " frames\"\n";
     out << "    startTimeCode = 0\n    endTimeCode = " << std::max(0, rec.frame_count() - 1) << "\n";

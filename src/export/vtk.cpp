@@ -11,7 +11,6 @@
 #include "common/atomic_output.h"
 #include "common/error.h"
 #include "export/base64.h"
-#include "export/write_file.h"
 #include "mesh/strain.h"
 
 namespace systole::exporter {

@@ -100,6 +100,48 @@ TEST(AtomicOutput, WithoutCommitTheEarlierOutputStaysAndNothingIsLeft) {
   EXPECT_EQ(names_in(dir), std::vector<std::string>{"clip.mp4"});
 }
 
+TEST(AtomicOutput, AStreamedFileAppearsWholeOnlyWhenItsWriterSucceeds) {
+  const fs::path dir = fresh_dir("stream");
+  write(dir / "track.wav", "earlier");
+  write_atomically(dir / "track.wav", [&](std::ostream& out) {
+    out << "RIFF";
+    EXPECT_EQ(read(dir / "track.wav"), "earlier") << "untouched while the writer runs";
+    out << " and the rest";
+  });
+  EXPECT_EQ(read(dir / "track.wav"), "RIFF and the rest");
+  EXPECT_EQ(names_in(dir), std::vector<std::string>{"track.wav"}) << "no temporary or lock file is left";
+
+  write_file_atomically(dir / "captions.vtt", "WEBVTT\n");
+  EXPECT_EQ(read(dir / "captions.vtt"), "WEBVTT\n");
+}
+
+TEST(AtomicOutput, AThrowingStreamWriterLeavesNoFileAndNoTemporary) {
+  const fs::path dir = fresh_dir("stream_throw");
+  const auto half_then_throw = [](std::ostream& out) {
+    out << "half a file";
+    throw Error(ExitCode::kDataError, "the writer gave up");
+  };
+  EXPECT_THROW(write_atomically(dir / "new.wav", half_then_throw), Error);
+  EXPECT_TRUE(names_in(dir).empty()) << ::testing::PrintToString(names_in(dir));
+  write(dir / "old.wav", "earlier");
+  EXPECT_THROW(write_atomically(dir / "old.wav", half_then_throw), Error);
+  EXPECT_EQ(read(dir / "old.wav"), "earlier");
+  EXPECT_EQ(names_in(dir), std::vector<std::string>{"old.wav"});
+}
+
+TEST(AtomicOutput, AStreamedFileInAMissingFolderIsRefusedBeforeItsWriterRuns) {
+  const fs::path dir = fresh_dir("stream_missing");
+  bool ran = false;
+  try {
+    write_atomically(dir / "absent" / "a.wav", [&](std::ostream&) { ran = true; });
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kCannotCreate) << e.what();
+  }
+  EXPECT_FALSE(ran);
+  EXPECT_TRUE(names_in(dir).empty());
+}
+
 TEST(AtomicOutput, ASecondWriterOfOneTargetIsRefusedWithWhoHoldsIt) {
   const fs::path dir = fresh_dir("busy");
   const fs::path target = dir / "clip.mp4";
