@@ -8,6 +8,7 @@
 #include "common/atomic_output.h"
 #include "common/error.h"
 #include "encode/av_error.h"
+#include "encode/muxer.h"
 #include "encode/palette.h"
 
 extern "C" {
@@ -89,78 +90,93 @@ void GifWriter::write(const Image& image, int frame_index) {
   ++m.frames;
 }
 
-void GifWriter::Impl::encode_all() {
-  detail::quiet_libav_logging();
-  const AVCodec* codec = avcodec_find_encoder(AV_CODEC_ID_GIF);
-  if (codec == nullptr) fail(ExitCode::kInternal, "this FFmpeg build has no GIF encoder");
-  AVFormatContext* format = nullptr;
-  AVCodecContext* encoder = nullptr;
-  AVFrame* frame = nullptr;
-  AVPacket* packet = nullptr;
-  struct Cleanup {
-    AVFormatContext*& f; AVCodecContext*& e; AVFrame*& fr; AVPacket*& p;
-    ~Cleanup() {
-      av_packet_free(&p);
-      av_frame_free(&fr);
-      avcodec_free_context(&e);
-      if (f != nullptr) {
-        if (f->pb != nullptr) avio_closep(&f->pb);
-        avformat_free_context(f);
-      }
-    }
-  } cleanup{format, encoder, frame, packet};
+namespace {
 
-  int err = avformat_alloc_output_context2(&format, nullptr, "gif", output.temp_path().c_str());
-  if (err < 0 || format == nullptr) fail(ExitCode::kInternal, "cannot set up the GIF muxer: " + av_error_text(err));
-  format->flags |= AVFMT_FLAG_BITEXACT;
+/// libavcodec's GIF encoder with its frame and packet, freed together.
+struct GifEncoder {
+  AVCodecContext* encoder = nullptr;
+  AVFrame* frame = nullptr;    ///< Reused for every frame.
+  AVPacket* packet = nullptr;  ///< Reused for every packet.
+
+  GifEncoder(const AVCodec* codec, int width, int height);
+  ~GifEncoder() {
+    av_packet_free(&packet);
+    av_frame_free(&frame);
+    avcodec_free_context(&encoder);
+  }
+  GifEncoder(const GifEncoder&) = delete;
+  GifEncoder& operator=(const GifEncoder&) = delete;
+
+  void allocate_frame();
+  void fill_frame(const std::vector<std::uint8_t>& indices, const std::vector<PaletteColor>& palette);
+  void send(const AVFrame* f, detail::Muxer& muxer, const AVStream* stream);
+};
+
+GifEncoder::GifEncoder(const AVCodec* codec, int width, int height) {
   encoder = avcodec_alloc_context3(codec);
   frame = av_frame_alloc();
   packet = av_packet_alloc();
   if (encoder == nullptr || frame == nullptr || packet == nullptr) fail(ExitCode::kInternal, "out of memory");
-  encoder->width = settings.width;
-  encoder->height = settings.height;
+  encoder->width = width;
+  encoder->height = height;
   encoder->pix_fmt = AV_PIX_FMT_PAL8;
   encoder->time_base = AVRational{1, 100};  // GIF delays are centiseconds.
   encoder->flags |= AV_CODEC_FLAG_BITEXACT;
-  err = avcodec_open2(encoder, codec, nullptr);
+  const int err = avcodec_open2(encoder, codec, nullptr);
   if (err < 0) fail(ExitCode::kInternal, "cannot open the GIF encoder: " + av_error_text(err));
-  AVStream* stream = avformat_new_stream(format, nullptr);
-  if (stream == nullptr) fail(ExitCode::kInternal, "cannot add a video stream");
-  stream->time_base = encoder->time_base;
-  avcodec_parameters_from_context(stream->codecpar, encoder);
+}
 
-  err = avio_open(&format->pb, output.temp_path().c_str(), AVIO_FLAG_WRITE);
-  if (err < 0) throw Error(ExitCode::kCannotCreate, "cannot create '" + output.temp_path().string() + "': " + av_error_text(err));
-  AVDictionary* options = nullptr;
-  av_dict_set(&options, "loop", "0", 0);  // Loop forever: slides.
-  err = avformat_write_header(format, &options);
-  av_dict_free(&options);
-  if (err < 0) fail(ExitCode::kIoError, "cannot write the GIF header: " + av_error_text(err));
-
+void GifEncoder::allocate_frame() {
   frame->format = AV_PIX_FMT_PAL8;
-  frame->width = settings.width;
-  frame->height = settings.height;
+  frame->width = encoder->width;
+  frame->height = encoder->height;
   if (av_frame_get_buffer(frame, 0) < 0) fail(ExitCode::kInternal, "out of memory for a frame");
   // Padding beyond the picture is never written; zeroed, the encoder sees the same bytes on
   // every run (encode/video_writer.cpp found an encoder reading it).
   for (AVBufferRef* buffer : frame->buf) {
     if (buffer != nullptr) std::memset(buffer->data, 0, buffer->size);
   }
+}
+
+/// The frame's palette indices, row by row, and its palette (padded with black to 256).
+void GifEncoder::fill_frame(const std::vector<std::uint8_t>& indices, const std::vector<PaletteColor>& palette) {
+  if (av_frame_make_writable(frame) < 0) fail(ExitCode::kInternal, "cannot get a writable frame");
+  const int width = frame->width;
+  for (int y = 0; y < frame->height; ++y) {
+    std::memcpy(frame->data[0] + static_cast<std::ptrdiff_t>(y) * frame->linesize[0],
+                indices.data() + static_cast<std::size_t>(y) * width, static_cast<std::size_t>(width));
+  }
+  auto* argb = reinterpret_cast<std::uint32_t*>(frame->data[1]);
+  for (std::size_t k = 0; k < 256; ++k) {
+    const PaletteColor c = k < palette.size() ? palette[k] : PaletteColor{0, 0, 0};
+    argb[k] = 0xFF000000u | static_cast<std::uint32_t>(c[0]) << 16 | static_cast<std::uint32_t>(c[1]) << 8 | c[2];
+  }
+}
+
+/// Sends one frame (nullptr: flush) and writes every packet the encoder has ready.
+void GifEncoder::send(const AVFrame* f, detail::Muxer& muxer, const AVStream* stream) {
+  int err = avcodec_send_frame(encoder, f);
+  if (err < 0) fail(ExitCode::kInternal, "the GIF encoder refused a frame: " + av_error_text(err));
+  while ((err = avcodec_receive_packet(encoder, packet)) == 0) muxer.write(packet, encoder->time_base, stream);
+  if (err != AVERROR(EAGAIN) && err != AVERROR_EOF) fail(ExitCode::kInternal, "the GIF encoder failed: " + av_error_text(err));
+}
+
+}  // namespace
+
+void GifWriter::Impl::encode_all() {
+  detail::quiet_libav_logging();
+  const AVCodec* codec = avcodec_find_encoder(AV_CODEC_ID_GIF);
+  if (codec == nullptr) fail(ExitCode::kInternal, "this FFmpeg build has no GIF encoder");
+  detail::Muxer muxer(output, "gif", "GIF");
+  GifEncoder gif(codec, settings.width, settings.height);  // Freed before the muxer.
+  AVStream* stream = avformat_new_stream(muxer.context(), nullptr);
+  if (stream == nullptr) fail(ExitCode::kInternal, "cannot add a video stream");
+  stream->time_base = gif.encoder->time_base;
+  avcodec_parameters_from_context(stream->codecpar, gif.encoder);
+  muxer.write_header({{"loop", "0"}});  // Loop forever: slides.
+  gif.allocate_frame();
 
   PaletteMapper mapper(histogram.build(256));
-  const auto send = [&](const AVFrame* f) {
-    err = avcodec_send_frame(encoder, f);
-    if (err < 0) fail(ExitCode::kInternal, "the GIF encoder refused a frame: " + av_error_text(err));
-    while ((err = avcodec_receive_packet(encoder, packet)) == 0) {
-      packet->stream_index = stream->index;
-      av_packet_rescale_ts(packet, encoder->time_base, stream->time_base);
-      err = av_interleaved_write_frame(format, packet);
-      av_packet_unref(packet);
-      if (err < 0) fail(ExitCode::kIoError, "cannot write to '" + output.temp_path().string() + "': " + av_error_text(err));
-    }
-    if (err != AVERROR(EAGAIN) && err != AVERROR_EOF) fail(ExitCode::kInternal, "the GIF encoder failed: " + av_error_text(err));
-  };
-
   Image image(settings.width, settings.height);
   std::vector<std::uint8_t> indices;
   std::rewind(store);
@@ -169,25 +185,12 @@ void GifWriter::Impl::encode_all() {
       fail(ExitCode::kIoError, "cannot read back a kept frame");
     }
     mapper.map(image, indices);
-    if (av_frame_make_writable(frame) < 0) fail(ExitCode::kInternal, "cannot get a writable frame");
-    for (int y = 0; y < settings.height; ++y) {
-      std::memcpy(frame->data[0] + static_cast<std::ptrdiff_t>(y) * frame->linesize[0],
-                  indices.data() + static_cast<std::size_t>(y) * settings.width, static_cast<std::size_t>(settings.width));
-    }
-    auto* argb = reinterpret_cast<std::uint32_t*>(frame->data[1]);
-    const auto& palette = mapper.palette();
-    for (std::size_t k = 0; k < 256; ++k) {
-      const PaletteColor c = k < palette.size() ? palette[k] : PaletteColor{0, 0, 0};
-      argb[k] = 0xFF000000u | static_cast<std::uint32_t>(c[0]) << 16 | static_cast<std::uint32_t>(c[1]) << 8 | c[2];
-    }
-    frame->pts = start_cs(i, settings.fps);
-    send(frame);
+    gif.fill_frame(indices, mapper.palette());
+    gif.frame->pts = start_cs(i, settings.fps);
+    gif.send(gif.frame, muxer, stream);
   }
-  send(nullptr);
-  err = av_write_trailer(format);
-  if (err < 0) fail(ExitCode::kIoError, "cannot finish '" + output.target().string() + "': " + av_error_text(err));
-  err = avio_closep(&format->pb);
-  if (err < 0) fail(ExitCode::kIoError, "cannot close '" + output.temp_path().string() + "': " + av_error_text(err));
+  gif.send(nullptr, muxer, stream);
+  muxer.finish();
 }
 
 void GifWriter::finish() {

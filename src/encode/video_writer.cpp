@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "encode/av_error.h"
 #include "encode/gif_writer.h"
+#include "encode/muxer.h"
 #include "encode/text_streams.h"
 
 extern "C" {
@@ -142,9 +143,9 @@ struct VideoWriter::Impl {
   VideoSettings settings;
   const Codec& codec;
   AtomicOutput output;
-  AVFormatContext* format = nullptr;
+  std::optional<detail::Muxer> muxer;  // Made by open(); freed after the encoders.
   AVCodecContext* encoder = nullptr;
-  AVStream* stream = nullptr;  // Owned by `format`.
+  AVStream* stream = nullptr;  // Owned by the muxer.
   AVFrame* frame = nullptr;    // Reused for every frame.
   AVPacket* packet = nullptr;  // Reused for every packet.
   SwsContext* sws = nullptr;
@@ -168,16 +169,17 @@ struct VideoWriter::Impl {
     av_packet_free(&packet);
     av_frame_free(&frame);
     avcodec_free_context(&encoder);
-    if (format != nullptr) {
-      if (format->pb != nullptr) avio_closep(&format->pb);
-      avformat_free_context(format);
-    }
-    // `output`'s destructor then removes the temporary unless it was committed.
+    // `muxer`'s destructor then closes the file and frees the muxer, and `output`'s removes
+    // the temporary unless it was committed.
   }
 
   [[noreturn]] void fail(ExitCode code, const std::string& what) const { encode::fail(code, what, settings.format); }
   void open();
+  AVFormatContext* format() const { return muxer->context(); }
   void open_encoder(const AVCodec* av_codec);
+  AVDictionary* encoder_options();
+  void allocate_frame();
+  void add_video_stream();
   void open_converter();
   void open_file();
   void open_audio();
@@ -193,20 +195,36 @@ void VideoWriter::Impl::open() {
     fail(ExitCode::kInternal, std::string("this FFmpeg build has no ") + codec.encoder +
                                   " encoder (check `systole info`; install Debian's libavcodec59)");
   }
-  const std::string path = output.temp_path().string();
-  // The format is forced: the temporary's name is not something to guess a format from.
-  int err = avformat_alloc_output_context2(&format, nullptr, codec.muxer, path.c_str());
-  if (err < 0 || format == nullptr) fail(ExitCode::kInternal, "cannot set up the muxer: " + av_error_text(err));
-  // No random segment IDs, dates or library versions: the same frames give the same bytes.
-  format->flags |= AVFMT_FLAG_BITEXACT;
+  muxer.emplace(output, codec.muxer, codec.label);
   open_encoder(av_codec);
   open_converter();
   if (!settings.audio.empty()) open_audio();
-  if (!settings.subtitles.empty()) subtitles.emplace(format, codec.subtitle_encoder, settings.subtitles, codec.label);
-  detail::add_chapters(format, settings.chapters, codec.label);
+  if (!settings.subtitles.empty()) subtitles.emplace(format(), codec.subtitle_encoder, settings.subtitles, codec.label);
+  detail::add_chapters(format(), settings.chapters, codec.label);
   open_file();
-  if (subtitles) subtitles->write(format);
+  if (subtitles) subtitles->write(format());
 }
+
+namespace {
+
+/// The colour properties the encoder writes into the stream.
+void set_colorimetry(AVCodecContext& encoder, bool yuv) {
+  if (yuv) {
+    // Limited ("tv") range with BT.709 everywhere, matching the swscale conversion below.
+    encoder.color_range = AVCOL_RANGE_MPEG;
+    encoder.color_primaries = AVCOL_PRI_BT709;
+    encoder.color_trc = AVCOL_TRC_BT709;
+    encoder.colorspace = AVCOL_SPC_BT709;
+  } else {
+    // The rendered sRGB values themselves, in planes: nothing converted, nothing lost.
+    encoder.color_range = AVCOL_RANGE_JPEG;
+    encoder.color_primaries = AVCOL_PRI_BT709;
+    encoder.color_trc = AVCOL_TRC_IEC61966_2_1;
+    encoder.colorspace = AVCOL_SPC_RGB;
+  }
+}
+
+}  // namespace
 
 void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
   encoder = avcodec_alloc_context3(av_codec);
@@ -221,21 +239,20 @@ void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
   encoder->framerate = AVRational{rate.num, rate.den};
   encoder->time_base = AVRational{rate.den, rate.num};  // One tick per frame: pts = frame number.
   encoder->sample_aspect_ratio = AVRational{1, 1};
-  if (codec.yuv) {
-    // Limited ("tv") range with BT.709 everywhere, matching the swscale conversion below.
-    encoder->color_range = AVCOL_RANGE_MPEG;
-    encoder->color_primaries = AVCOL_PRI_BT709;
-    encoder->color_trc = AVCOL_TRC_BT709;
-    encoder->colorspace = AVCOL_SPC_BT709;
-  } else {
-    // The rendered sRGB values themselves, in planes: nothing converted, nothing lost.
-    encoder->color_range = AVCOL_RANGE_JPEG;
-    encoder->color_primaries = AVCOL_PRI_BT709;
-    encoder->color_trc = AVCOL_TRC_IEC61966_2_1;
-    encoder->colorspace = AVCOL_SPC_RGB;
-  }
-  if (format->oformat->flags & AVFMT_GLOBALHEADER) encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  set_colorimetry(*encoder, codec.yuv);
+  if (format()->oformat->flags & AVFMT_GLOBALHEADER) encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
 
+  AVDictionary* options = encoder_options();
+  const int err = avcodec_open2(encoder, av_codec, &options);
+  av_dict_free(&options);
+  if (err < 0) fail(ExitCode::kInternal, std::string("cannot open ") + codec.encoder + ": " + av_error_text(err));
+  allocate_frame();
+  add_video_stream();
+}
+
+// The format's encoder settings: some set on the context, the rest returned as the
+// options avcodec_open2 takes (the caller frees them).
+AVDictionary* VideoWriter::Impl::encoder_options() {
   AVDictionary* options = nullptr;
   switch (settings.format) {
     case VideoFormat::kMkv:
@@ -271,10 +288,11 @@ void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
       break;
     }
   }
-  const int err = avcodec_open2(encoder, av_codec, &options);
-  av_dict_free(&options);
-  if (err < 0) fail(ExitCode::kInternal, std::string("cannot open ") + codec.encoder + ": " + av_error_text(err));
+  return options;
+}
 
+// The one frame every picture is converted into, in the encoder's format and colours.
+void VideoWriter::Impl::allocate_frame() {
   frame->format = encoder->pix_fmt;
   frame->width = encoder->width;
   frame->height = encoder->height;
@@ -289,8 +307,10 @@ void VideoWriter::Impl::open_encoder(const AVCodec* av_codec) {
   for (AVBufferRef* buffer : frame->buf) {
     if (buffer != nullptr) std::memset(buffer->data, 0, buffer->size);
   }
+}
 
-  stream = avformat_new_stream(format, nullptr);
+void VideoWriter::Impl::add_video_stream() {
+  stream = avformat_new_stream(format(), nullptr);
   if (stream == nullptr) fail(ExitCode::kInternal, "cannot add a video stream");
   // A hint; the muxer may pick a finer one. The stream's frame rate stays unset: MP4 keeps
   // none (players derive it from sample durations), and with it set libavformat would
@@ -319,20 +339,11 @@ void VideoWriter::Impl::open_converter() {
 }
 
 void VideoWriter::Impl::open_file() {
-  int err = avio_open(&format->pb, output.temp_path().c_str(), AVIO_FLAG_WRITE);
-  if (err < 0) {
-    throw Error(ExitCode::kCannotCreate,
-                "cannot create '" + output.temp_path().string() + "': " + av_error_text(err));
-  }
-  AVDictionary* options = nullptr;
+  std::vector<std::pair<const char*, const char*>> options;
   if (settings.format == VideoFormat::kMp4) {
-    av_dict_set(&options, "movflags", "+faststart", 0);  // moov before mdat: plays while downloading.
+    options.emplace_back("movflags", "+faststart");  // moov before mdat: plays while downloading.
   }
-  err = avformat_write_header(format, &options);
-  av_dict_free(&options);
-  if (err < 0) {
-    fail(ExitCode::kIoError, "cannot write the header of '" + output.target().string() + "': " + av_error_text(err));
-  }
+  muxer->write_header(options);
 }
 
 // Sends one frame (nullptr: flush) and writes every packet the encoder has ready.
@@ -352,13 +363,7 @@ void VideoWriter::Impl::write_packets(AVCodecContext* from, AVStream* to) {
     // libavcodec 59's libx264 wrapper leaves durations at 0, which makes the last frame
     // last 0 s (a 30-frame clip at 30 fps would be 0.967 s). One frame = one tick.
     if (packet->duration == 0 && from == encoder) packet->duration = 1;
-    av_packet_rescale_ts(packet, from->time_base, to->time_base);
-    packet->stream_index = to->index;
-    err = av_interleaved_write_frame(format, packet);  // Takes the packet's reference.
-    av_packet_unref(packet);
-    if (err < 0) {
-      fail(ExitCode::kIoError, "cannot write to '" + output.temp_path().string() + "': " + av_error_text(err));
-    }
+    muxer->write(packet, from->time_base, to);
   }
 }
 
@@ -387,7 +392,7 @@ void VideoWriter::Impl::open_audio() {
   // One thread and bit-exact: the same samples give the same packets.
   audio_encoder->thread_count = 1;
   audio_encoder->flags |= AV_CODEC_FLAG_BITEXACT;
-  if (format->oformat->flags & AVFMT_GLOBALHEADER) audio_encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  if (format()->oformat->flags & AVFMT_GLOBALHEADER) audio_encoder->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   AVDictionary* options = nullptr;
   if (settings.format == VideoFormat::kWebm) av_dict_set(&options, "application", "audio", 0);
   const int err = avcodec_open2(audio_encoder, av_codec, &options);
@@ -402,7 +407,7 @@ void VideoWriter::Impl::open_audio() {
   for (AVBufferRef* buffer : audio_frame->buf) {
     if (buffer != nullptr) std::memset(buffer->data, 0, buffer->size);  // No stray bytes reach the encoder.
   }
-  audio_stream = avformat_new_stream(format, nullptr);
+  audio_stream = avformat_new_stream(format(), nullptr);
   if (audio_stream == nullptr) fail(ExitCode::kInternal, "cannot add an audio stream");
   audio_stream->time_base = audio_encoder->time_base;
   // The encoder's priming samples (AAC 1024, Opus 312) go with the parameters as
@@ -492,14 +497,7 @@ void VideoWriter::finish() {
     if (err < 0) m.fail(ExitCode::kInternal, "cannot flush the audio encoder: " + av_error_text(err));
     m.write_packets(m.audio_encoder, m.audio_stream);
   }
-  int err = av_write_trailer(m.format);  // With +faststart this also moves moov to the front.
-  if (err < 0) {
-    m.fail(ExitCode::kIoError, "cannot finish '" + m.output.target().string() + "': " + av_error_text(err));
-  }
-  err = avio_closep(&m.format->pb);
-  if (err < 0) {
-    m.fail(ExitCode::kIoError, "cannot close '" + m.output.temp_path().string() + "': " + av_error_text(err));
-  }
+  m.muxer->finish();
   m.output.commit();
   m.finished = true;
 }
