@@ -73,11 +73,41 @@ std::size_t last_difference(const std::uint8_t* a, const std::uint8_t* b, std::s
 
 std::uint8_t to_byte(float c) { return static_cast<std::uint8_t>(std::clamp(c, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
+/// The filtered colour of an edge pixel (x, y) of `source`, from the luma rows above, at
+/// and below it.
+Rgb filtered(const Image& source, const float* above, const float* row, const float* below, int x, int y) {
+  const float l_nw = above[x - 1], l_ne = above[x + 1], l_sw = below[x - 1], l_se = below[x + 1];
+  const float l_m = row[x];
+  const float l_min = std::min({l_m, l_nw, l_ne, l_sw, l_se});
+  const float l_max = std::max({l_m, l_nw, l_ne, l_sw, l_se});
+
+  // Along the edge: across the luma gradient (image rows grow downwards).
+  float dx = -((l_nw + l_ne) - (l_sw + l_se));
+  float dy = -((l_nw + l_sw) - (l_ne + l_se));
+  const float reduce = std::max((l_nw + l_ne + l_sw + l_se) * (0.25f * kReduceMul), kReduceMin);
+  const float scale = 1.0f / (std::min(std::abs(dx), std::abs(dy)) + reduce);
+  dx = std::clamp(dx * scale, -kSpanMax, kSpanMax);
+  dy = std::clamp(dy * scale, -kSpanMax, kSpanMax);
+  const float fx = static_cast<float>(x), fy = static_cast<float>(y);
+  const auto at = [&](float t) { return sample(source, fx + t * dx, fy + t * dy); };
+  const Rgb a = 0.5f * (at(1.0f / 3.0f - 0.5f) + at(2.0f / 3.0f - 0.5f));
+  const Rgb b = 0.5f * a + 0.25f * (at(-0.5f) + at(0.5f));
+  const float l_b = luma(b.r, b.g, b.b);
+  return (l_b < l_min || l_b > l_max) ? a : b;
+}
+
 }  // namespace
 
 void Fxaa::apply(Image& image) {
+  Box box;
+  if (!filtered_box(image, box)) return;
+  prepare_source(image, box);
+  for (int y = box.ya; y <= box.yb; ++y) filter_row(image, y, box.xa, box.xb);
+}
+
+bool Fxaa::filtered_box(const Image& image, Box& box) {
   const int w = image.width, h = image.height;
-  if (w < 3 || h < 3) return;
+  if (w < 3 || h < 3) return false;
   // Only where the frame is not the background: a pixel whose diagonal neighbours and itself
   // all have the first pixel's colour has no contrast and is left as it is, so the pixels
   // outside the box of the others, grown by one, need no luma and no test.
@@ -94,14 +124,18 @@ void Fxaa::apply(Image& image) {
     x0 = std::min(x0, static_cast<int>(left / 3)), x1 = std::max(x1, static_cast<int>(right / 3));
     y0 = std::min(y0, y), y1 = std::max(y1, y);
   }
-  if (x1 < 0) return;  // One colour.
+  if (x1 < 0) return false;  // One colour.
   // Border pixels are left as they are: the corners read outside the frame.
-  const int xa = std::max(1, x0 - 1), xb = std::min(w - 2, x1 + 1);
-  const int ya = std::max(1, y0 - 1), yb = std::min(h - 2, y1 + 1);
-  if (xa > xb || ya > yb) return;
+  box.xa = std::max(1, x0 - 1), box.xb = std::min(w - 2, x1 + 1);
+  box.ya = std::max(1, y0 - 1), box.yb = std::min(h - 2, y1 + 1);
+  return box.xa <= box.xb && box.ya <= box.yb;
+}
+
+void Fxaa::prepare_source(const Image& image, const Box& box) {
+  const int w = image.width, h = image.height;
   // The taps reach half the longest span and a pixel beyond it: those rows of the input are copied.
   const int reach = static_cast<int>(std::ceil(0.5f * kSpanMax)) + 1;
-  const int copy_a = std::max(0, ya - reach), copy_b = std::min(h - 1, yb + reach);
+  const int copy_a = std::max(0, box.ya - reach), copy_b = std::min(h - 1, box.yb + reach);
   source_.width = w;
   source_.height = h;
   source_.rgb.resize(image.rgb.size());  // No allocation once sized.
@@ -115,52 +149,37 @@ void Fxaa::apply(Image& image) {
     }
     return t;
   }();
-  for (int y = ya - 1; y <= yb + 1; ++y) {
-    const std::uint8_t* p = source_.pixel(xa - 1, y);
+  for (int y = box.ya - 1; y <= box.yb + 1; ++y) {
+    const std::uint8_t* p = source_.pixel(box.xa - 1, y);
     float* out = &luma_[static_cast<std::size_t>(y) * w];
-    for (int x = xa - 1; x <= xb + 1; ++x, p += 3) {
+    for (int x = box.xa - 1; x <= box.xb + 1; ++x, p += 3) {
       out[x] = (weighted[0][p[0]] + weighted[1][p[1]] + weighted[2][p[2]]) * (1.0f / 255.0f);
     }
   }
   edge_.resize(static_cast<std::size_t>(w));
-  for (int y = ya; y <= yb; ++y) {
-    const float* above = &luma_[static_cast<std::size_t>(y - 1) * w];
-    const float* row = above + w;
-    const float* below = row + w;
-    // The contrast test for the whole row first, without branches, so the compiler
-    // vectorizes it (most pixels fail it); then the few that pass. min and max are exact,
-    // so the test is the same as per pixel.
-    for (int x = xa; x <= xb; ++x) {
-      const float l_m = row[x];
-      const float l_min = std::min(std::min(std::min(above[x - 1], above[x + 1]), std::min(below[x - 1], below[x + 1])), l_m);
-      const float l_max = std::max(std::max(std::max(above[x - 1], above[x + 1]), std::max(below[x - 1], below[x + 1])), l_m);
-      edge_[static_cast<std::size_t>(x)] = l_max - l_min >= std::max(kEdgeThresholdMin, l_max * kEdgeThreshold) ? 1u : 0u;
-    }
-    for (int x = xa; x <= xb; ++x) {
-      if (!edge_[static_cast<std::size_t>(x)]) continue;
-      const float l_nw = above[x - 1], l_ne = above[x + 1], l_sw = below[x - 1], l_se = below[x + 1];
-      const float l_m = row[x];
-      const float l_min = std::min({l_m, l_nw, l_ne, l_sw, l_se});
-      const float l_max = std::max({l_m, l_nw, l_ne, l_sw, l_se});
+}
 
-      // Along the edge: across the luma gradient (image rows grow downwards).
-      float dx = -((l_nw + l_ne) - (l_sw + l_se));
-      float dy = -((l_nw + l_sw) - (l_ne + l_se));
-      const float reduce = std::max((l_nw + l_ne + l_sw + l_se) * (0.25f * kReduceMul), kReduceMin);
-      const float scale = 1.0f / (std::min(std::abs(dx), std::abs(dy)) + reduce);
-      dx = std::clamp(dx * scale, -kSpanMax, kSpanMax);
-      dy = std::clamp(dy * scale, -kSpanMax, kSpanMax);
-      const float fx = static_cast<float>(x), fy = static_cast<float>(y);
-      const auto at = [&](float t) { return sample(source_, fx + t * dx, fy + t * dy); };
-      const Rgb a = 0.5f * (at(1.0f / 3.0f - 0.5f) + at(2.0f / 3.0f - 0.5f));
-      const Rgb b = 0.5f * a + 0.25f * (at(-0.5f) + at(0.5f));
-      const float l_b = luma(b.r, b.g, b.b);
-      const Rgb& out = (l_b < l_min || l_b > l_max) ? a : b;
-      std::uint8_t* p = image.row(y) + 3 * static_cast<std::size_t>(x);
-      p[0] = to_byte(out.r);
-      p[1] = to_byte(out.g);
-      p[2] = to_byte(out.b);
-    }
+void Fxaa::filter_row(Image& image, int y, int xa, int xb) {
+  const int w = image.width;
+  const float* above = &luma_[static_cast<std::size_t>(y - 1) * w];
+  const float* row = above + w;
+  const float* below = row + w;
+  // The contrast test for the whole row first, without branches, so the compiler
+  // vectorizes it (most pixels fail it); then the few that pass. min and max are exact,
+  // so the test is the same as per pixel.
+  for (int x = xa; x <= xb; ++x) {
+    const float l_m = row[x];
+    const float l_min = std::min(std::min(std::min(above[x - 1], above[x + 1]), std::min(below[x - 1], below[x + 1])), l_m);
+    const float l_max = std::max(std::max(std::max(above[x - 1], above[x + 1]), std::max(below[x - 1], below[x + 1])), l_m);
+    edge_[static_cast<std::size_t>(x)] = l_max - l_min >= std::max(kEdgeThresholdMin, l_max * kEdgeThreshold) ? 1u : 0u;
+  }
+  for (int x = xa; x <= xb; ++x) {
+    if (!edge_[static_cast<std::size_t>(x)]) continue;
+    const Rgb out = filtered(source_, above, row, below, x, y);
+    std::uint8_t* p = image.row(y) + 3 * static_cast<std::size_t>(x);
+    p[0] = to_byte(out.r);
+    p[1] = to_byte(out.g);
+    p[2] = to_byte(out.b);
   }
 }
 

@@ -23,6 +23,18 @@ class Fxaa {
   void apply(Image& image);
 
  private:
+  /// The pixels filtered, inclusive bounds, top-left origin. unit: px
+  struct Box {
+    int xa = 0, xb = -1, ya = 0, yb = -1;
+  };
+  /// The box of the pixels that differ from the first one, grown by one, without the
+  /// frame's border; false when there is nothing to filter.
+  bool filtered_box(const Image& image, Box& box);
+  /// Copies the rows the taps can read into source_, and fills luma_ over the box grown by one.
+  void prepare_source(const Image& image, const Box& box);
+  /// Filters row y of `image` from column xa to xb (inclusive).
+  void filter_row(Image& image, int y, int xa, int xb);
+
   std::vector<float> luma_;  ///< Per pixel of the input, unit: 1 (0..1).
   /// Per pixel of the row being filtered: 1 where the contrast is enough to filter. Not a
   /// char: a char store may alias the luma, which kept the compiler from vectorizing the test.

@@ -1,7 +1,7 @@
 #pragma once
 // The OpenGL objects behind render::Renderer: the OSMesa context, shader programs and their
 // variants, framebuffers and the order-independent-transparency targets. Internal to
-// render/ (only renderer.cpp includes it), split out so the renderer reads as its passes.
+// render/ (only the renderer's files include it), split out so the renderer reads as its passes.
 
 // Only libOSMesa is linked: it exports the GL 4.5 entry points itself. Linking libGL as
 // well would bind every gl* symbol to it and silently do nothing (docs/architecture.md).
@@ -187,7 +187,5 @@ struct OitTargets {
     *this = OitTargets{};
   }
 };
-
-/// What draw() computes once per view.
 
 }  // namespace systole::render::gl
