@@ -15,8 +15,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// A folder of this test's own (ctest may run the tests of one program at once).
 fs::path scratch() {
-  const fs::path dir = fs::path(SYSTOLE_TEST_SCRATCH) / "input_file";
+  const fs::path dir = fs::path(SYSTOLE_TEST_SCRATCH) / "input_file" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

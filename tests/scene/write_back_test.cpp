@@ -43,8 +43,11 @@ struct Files {
   fs::path scene, output;
 };
 
+/// The scene and its mesh in a folder of this test's own (ctest may run the tests of one
+/// program at once), and where the tuned scene goes.
 Files files() {
-  const fs::path dir = fs::path(SYSTOLE_TEST_SCRATCH) / "write_back";
+  const fs::path dir = fs::path(SYSTOLE_TEST_SCRATCH) / "write_back" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::remove_all(dir);
   fs::create_directories(dir / "scenes" / "meshes");
   fs::create_directories(dir / "tuned");
