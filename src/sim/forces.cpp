@@ -41,15 +41,10 @@ void internal_and_scripted_forces(const Model& model, const Eigen::Matrix3Xd& x,
     f += pressure * state.volume_gradient;
   }
   for_each_poke(model, t, [&](int i, double factor, const Eigen::Vector3d& force_N) { f.col(i) += factor * force_N; });
-  for (const Grab& g : model.grabs) {
-    if (!grab_active(g, t)) continue;
-    const Eigen::Vector3d handle = handle_position(g, t);
-    const double k = 1.0 / g.compliance_m_per_N;
-    for (std::size_t m = 0; m < g.particles.size(); ++m) {
-      const int i = g.particles[m];
-      f.col(i) += k * (handle + g.offsets_m[m] - x.col(i));
-    }
-  }
+  for_each_grab(model, t, [&](int i, const Eigen::Vector3d& target_m, double compliance_m_per_N) {
+    const double k = 1.0 / compliance_m_per_N;
+    f.col(i) += k * (target_m - x.col(i));
+  });
 }
 
 }  // namespace systole::sim

@@ -184,17 +184,12 @@ void assemble(const Model& model, State& s, ImplicitCache& c, double h, double t
   });
   // Grabs: zero-length springs f = k (target - x) to the handle at the substep's end, so
   // df/dx = -k I on the diagonal.
-  for (const Grab& g : model.grabs) {
-    if (!grab_active(g, t_end)) continue;
-    const Eigen::Vector3d handle = handle_position(g, t_end);
-    const double k = 1.0 / g.compliance_m_per_N;
-    for (std::size_t m = 0; m < g.particles.size(); ++m) {
-      const int i = g.particles[m];
-      if (w[i] == 0) continue;
-      add_identity(values, &c.diagonal_slot[3 * i], h2 * k);
-      rhs.col(i) += h * k * (handle + g.offsets_m[m] - s.x.col(i)) - h2 * k * s.v.col(i);
-    }
-  }
+  for_each_grab(model, t_end, [&](int i, const Eigen::Vector3d& target_m, double compliance_m_per_N) {
+    if (w[i] == 0) return;
+    const double k = 1.0 / compliance_m_per_N;
+    add_identity(values, &c.diagonal_slot[3 * i], h2 * k);
+    rhs.col(i) += h * k * (target_m - s.x.col(i)) - h2 * k * s.v.col(i);
+  });
 }
 
 /// The volume term E = (k_V / 2) (V - V0(t))^2, k_V = 1 / compliance (unit: N/m^5), with the

@@ -246,13 +246,9 @@ StepSetup set_up(const Model& model, const State& s, const ProjectiveCache& c, c
   }
   Eigen::Matrix3Xd f_ext = Eigen::Matrix3Xd::Zero(3, model.pokes.empty() && model.grabs.empty() ? 0 : model.particle_count());
   for_each_poke(model, s.time_s, [&](int i, double factor, const Eigen::Vector3d& force_N) { f_ext.col(i) += factor * force_N; });
-  for (std::size_t k = 0; k < model.grabs.size(); ++k) {
-    const Grab& grab = model.grabs[k];
-    if (!grab_active(grab, t_end)) continue;
-    const Eigen::Vector3d handle = handle_position(grab, t_end);
-    const double stiffness = 1.0 / grab.compliance_m_per_N;
-    for (std::size_t m = 0; m < grab.particles.size(); ++m) f_ext.col(grab.particles[m]) += stiffness * (handle + grab.offsets_m[m]);
-  }
+  for_each_grab(model, t_end, [&](int i, const Eigen::Vector3d& target_m, double compliance_m_per_N) {
+    f_ext.col(i) += (1.0 / compliance_m_per_N) * target_m;
+  });
   out.rest_m.resize(static_cast<std::size_t>(model.springs.size()));
   for (int j = 0; j < model.springs.size(); ++j) {
     out.rest_m[static_cast<std::size_t>(j)] = driven_rest_length(model.springs, j, s.region_contraction);

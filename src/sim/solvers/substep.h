@@ -1,7 +1,7 @@
 #pragma once
 // What every solver does the same way inside a substep: the regions' rest-length
 // contraction at a time, the drift of positions by the velocities (with kinematic regions
-// placed), and the scripted pokes' forces. One place for each, so the three solvers
+// placed), and the scripted pokes' and grabs' forces. One place for each, so the three solvers
 // cannot drift apart (Kenwright & Sinmai §3: one body, several integrators).
 
 #include <Eigen/Core>
@@ -35,6 +35,23 @@ void for_each_poke(const Model& model, double t_s, Add&& add) {
     const double factor = poke_factor(p, t_s, model.ramp_s);
     if (factor == 0) continue;
     for (int i : p.particles) add(i, factor, p.force_per_particle_N);
+  }
+}
+
+/// Calls add(particle, target_m, compliance_m_per_N) for every particle of every grab
+/// holding at t_s (grab_active), in the model's order of grabs and each grab's order of
+/// particles: target_m = the handle's position at t_s + the particle's rest offset, where
+/// the grab's zero-length spring pulls it. The solver applies the spring its own way (a
+/// force, a right-hand side and matrix term, an XPBD attachment).
+template <class Add>
+void for_each_grab(const Model& model, double t_s, Add&& add) {
+  for (const Grab& g : model.grabs) {
+    if (!grab_active(g, t_s)) continue;
+    const Eigen::Vector3d handle = handle_position(g, t_s);
+    for (std::size_t m = 0; m < g.particles.size(); ++m) {
+      const Eigen::Vector3d target = handle + g.offsets_m[m];
+      add(g.particles[m], target, g.compliance_m_per_N);
+    }
   }
 }
 

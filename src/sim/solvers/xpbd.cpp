@@ -76,17 +76,12 @@ void solve_volume_constraint(const Model& model, State& s, double t, double h) {
 /// inverse mass 0).
 void solve_grabs(const Model& model, State& s, double t, double h) {
   const double no_motion[3] = {0, 0, 0};
-  for (const Grab& g : model.grabs) {
-    if (!grab_active(g, t)) continue;
-    const Eigen::Vector3d handle = handle_position(g, t);
-    const double alpha_tilde = g.compliance_m_per_N / (h * h);
-    for (std::size_t k = 0; k < g.particles.size(); ++k) {
-      const int i = g.particles[k];
-      Eigen::Vector3d target = handle + g.offsets_m[k];
-      solve_distance(target.data(), s.x.col(i).data(), no_motion, no_motion, 0.0, model.inverse_mass[i], 0.0,
-                     alpha_tilde, 0.0);
-    }
-  }
+  for_each_grab(model, t, [&](int i, const Eigen::Vector3d& target_m, double compliance_m_per_N) {
+    const double alpha_tilde = compliance_m_per_N / (h * h);
+    Eigen::Vector3d target = target_m;
+    solve_distance(target.data(), s.x.col(i).data(), no_motion, no_motion, 0.0, model.inverse_mass[i], 0.0,
+                   alpha_tilde, 0.0);
+  });
 }
 
 /// Attachments to the training target (sim/constraints/attachment.h): per particle and
