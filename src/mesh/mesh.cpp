@@ -31,6 +31,49 @@ TriangleMesh OrganMesh::part_surface(int part) const {
   return out;
 }
 
+std::vector<TriangleMesh> OrganMesh::part_surfaces() const {
+  const std::size_t n = surface.positions.size();
+  // Each vertex's parts: its first, then its others (also_in is sorted by vertex).
+  std::vector<std::vector<int>> parts_of(n);
+  for (std::size_t v = 0; v < n && v < vertex_part.size(); ++v) {
+    if (vertex_part[v] >= 0) parts_of[v].push_back(vertex_part[v]);
+  }
+  for (const auto& [v, p] : also_in) {
+    if (v >= 0 && static_cast<std::size_t>(v) < n) parts_of[static_cast<std::size_t>(v)].push_back(p);
+  }
+  for (auto& of : parts_of) {  // A pair may repeat a first part when not normalized.
+    std::sort(of.begin(), of.end());
+    of.erase(std::unique(of.begin(), of.end()), of.end());
+  }
+  std::vector<TriangleMesh> out(part_names.size());
+  const auto in = [&](int v, int part) {
+    if (v < 0 || static_cast<std::size_t>(v) >= n) return false;
+    const auto& of = parts_of[static_cast<std::size_t>(v)];
+    return std::find(of.begin(), of.end(), part) != of.end();
+  };
+  for (const Eigen::Vector3i& t : surface.triangles) {
+    if (t[0] < 0 || static_cast<std::size_t>(t[0]) >= n) continue;
+    for (const int part : parts_of[static_cast<std::size_t>(t[0])]) {
+      if (part < 0 || static_cast<std::size_t>(part) >= out.size() || !in(t[1], part) || !in(t[2], part)) continue;
+      out[static_cast<std::size_t>(part)].triangles.push_back(t);
+    }
+  }
+  // Each part over its own vertices, kept in the surface's order.
+  std::vector<int> own(n, -1);
+  for (TriangleMesh& part : out) {
+    std::vector<int> used;
+    for (const Eigen::Vector3i& t : part.triangles) used.insert(used.end(), {t[0], t[1], t[2]});
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    for (std::size_t k = 0; k < used.size(); ++k) {
+      own[static_cast<std::size_t>(used[k])] = static_cast<int>(k);
+      part.positions.push_back(surface.positions[static_cast<std::size_t>(used[k])]);
+    }
+    for (Eigen::Vector3i& t : part.triangles) t = {own[t[0]], own[t[1]], own[t[2]]};
+  }
+  return out;
+}
+
 void OrganMesh::normalize_membership() {
   std::erase_if(also_in, [&](const std::pair<int, int>& m) {
     return m.first < 0 || (static_cast<std::size_t>(m.first) < vertex_part.size() &&

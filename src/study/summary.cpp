@@ -38,8 +38,9 @@ void summarize_parts(std::ostringstream& s, const world::OrganBody& body) {
   const mesh::OrganMesh& m = body.geometry.mesh;
   if (m.part_names.empty()) return;
   s << "  parts (select with `part: NAME`):\n";
+  const std::vector<mesh::TriangleMesh> surfaces = m.part_surfaces();
   for (std::size_t p = 0; p < m.part_names.size(); ++p) {
-    const mesh::MeshReport r = mesh::inspect(m.part_surface(static_cast<int>(p)));
+    const mesh::MeshReport r = mesh::inspect(surfaces[p]);
     s << "    " << m.part_names[p] << ": " << r.triangles << " triangles, " << (r.closed() ? "closed" : "open") << "\n";
   }
 }
