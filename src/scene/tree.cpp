@@ -188,8 +188,49 @@ std::string where(const Origin& origin) {
   return origin.file + ":" + std::to_string(origin.line) + ":" + std::to_string(origin.column) + ": ";
 }
 
+namespace {
+
+/// The length of the valid UTF-8 sequence at text[i] (1 to 4), or 0 if none starts there.
+std::size_t utf8_length(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(i);
+  if (lead < 0x80) return 1;
+  const std::size_t n = lead >= 0xF0 && lead <= 0xF4 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC2 && lead < 0xE0 ? 2 : 0;
+  if (n == 0 || i + n > text.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) return 0;
+  }
+  if (n == 3 && ((lead == 0xE0 && byte(i + 1) < 0xA0) || (lead == 0xED && byte(i + 1) >= 0xA0))) return 0;  // Overlong, surrogate.
+  if (n == 4 && ((lead == 0xF0 && byte(i + 1) < 0x90) || (lead == 0xF4 && byte(i + 1) >= 0x90))) return 0;  // Overlong, > U+10FFFF.
+  return n;
+}
+
+/// `text` as a terminal shows it safely: bytes that are not UTF-8, and control characters
+/// but newline and tab, as \xNN (a garbage file's bytes end up in its error message).
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_length(text, i);
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (n == 0 || (n == 1 && c < 0x20 && c != '\n' && c != '\t') || c == 0x7F) {
+      static const char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 0xF];
+      ++i;
+      continue;
+    }
+    out.append(text.substr(i, n));
+    i += n;
+  }
+  return out;
+}
+
+}  // namespace
+
 void fail(const Origin& origin, const std::string& path, const std::string& message) {
-  throw Error(ExitCode::kDataError, where(origin) + (path.empty() ? "" : path + ": ") + message);
+  throw Error(ExitCode::kDataError, printable(where(origin) + (path.empty() ? "" : path + ": ") + message));
 }
 
 std::string unknown_key_message(std::string_view key, const std::vector<std::string>& allowed) {

@@ -22,6 +22,16 @@ TEST(SceneInvalid, UnknownKeyNamesPlaceAndSuggestsTheClosestKey) {
   EXPECT_EQ(f.message.rfind("scenes/test.yaml:5:7: organs[0].body: unknown key \'stifness\' (did you mean \'stiffness\'?); allowed keys: mass, stiffness, damping, ", 0), 0u) << f.message;
 }
 
+TEST(SceneInvalid, BytesThatAreNotTextAreShownEscapedInTheMessage) {
+  const auto f = load_error(std::string(kMinimalOrgans) + "sound\xfftrack: loud\n");
+  EXPECT_EQ(f.code, ExitCode::kDataError);
+  EXPECT_NE(f.message.find("sound\\xfftrack"), std::string::npos) << f.message;
+  for (const char c : f.message) EXPECT_NE(static_cast<unsigned char>(c), 0xFF) << "a raw byte in: " << f.message;
+  // Text that is UTF-8 stays as it is.
+  const auto g = load_error(std::string(kMinimalOrgans) + "caf\xc3\xa9: 1\n");
+  EXPECT_NE(g.message.find("unknown key 'caf\xc3\xa9'"), std::string::npos) << g.message;
+}
+
 TEST(SceneInvalid, UnknownTopLevelKeyWithoutCloseMatchHasNoSuggestion) {
   const auto f = load_error(std::string(kMinimalOrgans) + "soundtrack: loud\n");
   EXPECT_EQ(f.message.find("did you mean"), std::string::npos) << f.message;
