@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 
 #include "sim/constraints/volume.h"
@@ -34,6 +35,30 @@ double site_weight(scene::Stethoscope site, audio::SoundKind kind) {
     case audio::SoundKind::kS3: return apex ? 1.0 : 0.35;
     default: return 1.0;
   }
+}
+
+/// The murmur and its windows in video time: between `from` and `to` of the way from each
+/// event that opens its phase (S1 for a systolic murmur) in the clip to the next that closes it.
+audio::MurmurSound murmur(const scene::Murmur& m, const std::vector<world::CycleEvent>& events, const ClipClock& clock,
+                     const std::function<bool(double organ_s)>& in_clip) {
+  const bool systolic = m.phase == scene::MurmurPhase::kSystolic;
+  const auto opens = systolic ? world::CycleEventKind::kSystoleStart : world::CycleEventKind::kSystoleEnd;
+  const auto closes = systolic ? world::CycleEventKind::kSystoleEnd : world::CycleEventKind::kSystoleStart;
+  audio::MurmurSound out;
+  out.shape = murmur_shape(m.shape);
+  out.pitch_hz = m.pitch_hz;
+  out.gain = audio::gain_of_db(m.level_db);
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    if (events[i].kind != opens || !in_clip(events[i].time_s)) continue;
+    for (std::size_t j = i + 1; j < events.size(); ++j) {
+      if (events[j].kind == opens) break;
+      if (events[j].kind != closes) continue;
+      const double t0 = clock.video_s(events[i].time_s), t1 = clock.video_s(events[j].time_s);
+      out.windows.push_back({t0 + m.from * (t1 - t0), t0 + m.to * (t1 - t0)});
+      break;
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -126,24 +151,7 @@ audio::MixRequest mix_request(const scene::Scene& scene, const SoundSources& src
                                                                                    : audio::SoundKind::kS3;
       r.events.push_back({kind, clock.video_s(e.time_s), site_weight(h.stethoscope, kind) * audio::gain_of_db(tone.level_db)});
     }
-    if (h.murmur.enabled) {
-      const bool systolic = h.murmur.phase == scene::MurmurPhase::kSystolic;
-      const auto opens = systolic ? world::CycleEventKind::kSystoleStart : world::CycleEventKind::kSystoleEnd;
-      const auto closes = systolic ? world::CycleEventKind::kSystoleEnd : world::CycleEventKind::kSystoleStart;
-      r.murmur.shape = murmur_shape(h.murmur.shape);
-      r.murmur.pitch_hz = h.murmur.pitch_hz;
-      r.murmur.gain = audio::gain_of_db(h.murmur.level_db);
-      for (std::size_t i = 0; i < src.events.size(); ++i) {
-        if (src.events[i].kind != opens || !in_clip(src.events[i].time_s)) continue;
-        for (std::size_t j = i + 1; j < src.events.size(); ++j) {
-          if (src.events[j].kind == opens) break;
-          if (src.events[j].kind != closes) continue;
-          const double t0 = clock.video_s(src.events[i].time_s), t1 = clock.video_s(src.events[j].time_s);
-          r.murmur.windows.push_back({t0 + h.murmur.from * (t1 - t0), t0 + h.murmur.to * (t1 - t0)});
-          break;
-        }
-      }
-    }
+    if (h.murmur.enabled) r.murmur = murmur(h.murmur, src.events, clock, in_clip);
   }
   if (a.breath.enabled) {
     r.breath.gain = audio::gain_of_db(a.breath.level_db);

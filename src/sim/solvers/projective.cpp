@@ -347,6 +347,37 @@ double load_Pa(const Circulation& circulation, const Chamber& chamber, const Cha
   return 0;
 }
 
+/// The held chambers' volumes, linearized at the iterate: y + sum_j z_j mu_j with
+/// g_i . (y + sum_j z_j mu_j - x) = V_shut,i - V_i(x). The multiplier mu_i pushes the lining
+/// along grad V_i: it is the chamber's pressure. Adds the push to the solved positions `y`
+/// (`rhs`, rows of the free particles) and keeps each multiplier as its chamber's pressure.
+void hold_chambers(const ProjectiveCache& c, const HeldChambers& held, const std::vector<Eigen::Matrix3Xd>& chamber_gradient,
+                   const std::vector<double>& chamber_m3, const Eigen::Matrix3Xd& x, State& s, Rows& rhs) {
+  const int n = static_cast<int>(c.free_particles.size());
+  const Eigen::Index m = static_cast<Eigen::Index>(held.chamber.size());
+  Eigen::MatrixXd coupling(m, m);
+  Eigen::VectorXd residual(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const int k = held.chamber[static_cast<std::size_t>(i)];
+    const Eigen::Matrix3Xd& g = chamber_gradient[static_cast<std::size_t>(k)];
+    double g_dot_step = 0;
+    Eigen::VectorXd g_dot_z = Eigen::VectorXd::Zero(m);
+    for (int r = 0; r < n; ++r) {
+      const int p = c.free_particles[r];
+      const Eigen::Vector3d gp = g.col(p);
+      g_dot_step += gp.dot(rhs.row(r).transpose() - x.col(p));
+      for (Eigen::Index j = 0; j < m; ++j) g_dot_z[j] += gp.dot(held.z[static_cast<std::size_t>(j)].row(r).transpose());
+    }
+    coupling.row(i) = g_dot_z.transpose();
+    residual[i] = s.chambers[static_cast<std::size_t>(k)].shut_m3 - chamber_m3[static_cast<std::size_t>(k)] - g_dot_step;
+  }
+  const Eigen::VectorXd mu = coupling.partialPivLu().solve(residual);
+  for (Eigen::Index j = 0; j < m; ++j) {
+    rhs += mu[j] * held.z[static_cast<std::size_t>(j)];
+    s.chambers[static_cast<std::size_t>(held.chamber[static_cast<std::size_t>(j)])].pressure_Pa = mu[j];
+  }
+}
+
 /// One local/global iteration from the iterate x (every particle; pinned ones already at
 /// their new place): writes the new free positions into x.
 void iterate(const Model& model, State& s, const ProjectiveCache& c, const Factor& factor, const StepSetup& setup,
@@ -397,33 +428,7 @@ void iterate(const Model& model, State& s, const ProjectiveCache& c, const Facto
     const double k_v = 1.0 / model.volume.compliance_m5_per_N;
     rhs -= (k_v * hessian.g.cwiseProduct(rhs).sum() / (1.0 + k_v * hessian.g_dot_z)) * hessian.z;
   }
-  if (!held.chamber.empty()) {
-    // The held chambers' volumes, linearized at the iterate: y + sum_j z_j mu_j with
-    // g_i . (y + sum_j z_j mu_j - x) = V_shut,i - V_i(x). The multiplier mu_i pushes the
-    // lining along grad V_i: it is the chamber's pressure.
-    const Eigen::Index m = static_cast<Eigen::Index>(held.chamber.size());
-    Eigen::MatrixXd coupling(m, m);
-    Eigen::VectorXd residual(m);
-    for (Eigen::Index i = 0; i < m; ++i) {
-      const int k = held.chamber[static_cast<std::size_t>(i)];
-      const Eigen::Matrix3Xd& g = chamber_gradient[static_cast<std::size_t>(k)];
-      double g_dot_step = 0;
-      Eigen::VectorXd g_dot_z = Eigen::VectorXd::Zero(m);
-      for (int r = 0; r < n; ++r) {
-        const int p = c.free_particles[r];
-        const Eigen::Vector3d gp = g.col(p);
-        g_dot_step += gp.dot(rhs.row(r).transpose() - x.col(p));
-        for (Eigen::Index j = 0; j < m; ++j) g_dot_z[j] += gp.dot(held.z[static_cast<std::size_t>(j)].row(r).transpose());
-      }
-      coupling.row(i) = g_dot_z.transpose();
-      residual[i] = s.chambers[static_cast<std::size_t>(k)].shut_m3 - chamber_m3[static_cast<std::size_t>(k)] - g_dot_step;
-    }
-    const Eigen::VectorXd mu = coupling.partialPivLu().solve(residual);
-    for (Eigen::Index j = 0; j < m; ++j) {
-      rhs += mu[j] * held.z[static_cast<std::size_t>(j)];
-      s.chambers[static_cast<std::size_t>(held.chamber[static_cast<std::size_t>(j)])].pressure_Pa = mu[j];
-    }
-  }
+  if (!held.chamber.empty()) hold_chambers(c, held, chamber_gradient, chamber_m3, x, s, rhs);
   for (int r = 0; r < n; ++r) x.col(c.free_particles[r]) = rhs.row(r).transpose();
 }
 
