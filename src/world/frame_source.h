@@ -41,6 +41,9 @@ class FrameSource {
  public:
   /// Builds every organ's body (build_world). Throws what build_world throws.
   explicit FrameSource(const scene::Scene& scene);
+  // The world's step dispatch points at this source: it stays where it was built.
+  FrameSource(const FrameSource&) = delete;
+  FrameSource& operator=(const FrameSource&) = delete;
 
   /// The world as built; its bodies' states are the simulation's (not a replay's).
   World& world() { return world_; }
