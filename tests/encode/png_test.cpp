@@ -1,6 +1,8 @@
 #include "encode/png.h"
 
 #include <gtest/gtest.h>
+
+#include "support/error_code.h"
 #include <png.h>
 #include <zlib.h>
 
@@ -17,14 +19,7 @@ namespace {
 using test::scratch_dir;
 namespace fs = std::filesystem;
 
-ExitCode code_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.code();
-  }
-  return ExitCode::kOk;
-}
+using systole::test::code_of;
 
 Image pattern(int width, int height) {
   Image image(width, height);

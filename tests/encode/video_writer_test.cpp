@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/error_code.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -63,14 +65,7 @@ fs::path write_clip(const fs::path& file, const VideoSettings& s, int frames, in
   return file;
 }
 
-ExitCode code_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.code();
-  }
-  return ExitCode::kOk;
-}
+using systole::test::code_of;
 
 // Only `expected` is left in `dir`: no temporary survives.
 void expect_only(const fs::path& dir, const std::vector<std::string>& expected) {

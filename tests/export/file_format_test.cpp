@@ -5,19 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include "support/error_code.h"
+
 #include "common/error.h"
 
 namespace systole::exporter {
 namespace {
 
-ExitCode code_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.code();
-  }
-  return ExitCode::kOk;
-}
+using systole::test::code_of;
 
 TEST(FileFormat, TheExtensionPicksTheFormatInAnyCase) {
   EXPECT_EQ(file_format("out/heart.glb"), FileFormat::kGlb);
