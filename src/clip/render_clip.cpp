@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <deque>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <numeric>
@@ -20,6 +22,7 @@
 #include "clip/text_tracks.h"
 #include "audio/wav.h"
 #include "encode/webvtt.h"
+#include "common/atomic_output.h"
 #include "common/error.h"
 #include "encode/png.h"
 #include "encode/video_writer.h"
@@ -350,6 +353,25 @@ class ClipFrames {
   render::Fxaa fxaa_;
 };
 
+/// The run's claims on what it writes, taken before the world is built: a second run of the
+/// same output is refused at once, not after the costly set-up. The writers opened later
+/// join them (common/atomic_output.h). A PNG folder is claimed as a whole, its parents made
+/// first as its writer would.
+std::deque<OutputLock> claim_outputs(const RenderRequest& request) {
+  std::deque<OutputLock> claims;  // Locks neither copy nor move: a deque builds them in place.
+  if (!request.video.empty()) claims.emplace_back(request.video);
+  if (!request.wav.empty()) claims.emplace_back(request.wav);
+  if (!request.png_dir.empty()) {
+    const std::filesystem::path folder =
+        request.png_dir.has_filename() ? request.png_dir : request.png_dir.parent_path();  // "frames/"
+    std::error_code ec;
+    if (folder.has_parent_path()) std::filesystem::create_directories(folder.parent_path(), ec);
+    if (ec) throw Error(ExitCode::kCannotCreate, "cannot create '" + folder.parent_path().string() + "': " + ec.message());
+    claims.emplace_back(folder);
+  }
+  return claims;
+}
+
 }  // namespace
 
 StageTimes render_clip(const scene::Scene& given, const RenderRequest& request) {
@@ -362,6 +384,7 @@ StageTimes render_clip(const scene::Scene& given, const RenderRequest& request) 
   if (!given.audio.enabled && !request.wav.empty()) {
     throw Error(ExitCode::kUsage, "--wav: " + given.path + " has no audio: section, so there is no soundtrack to write");
   }
+  const std::deque<OutputLock> claims = claim_outputs(request);
   // The clip's one run of the simulation: the pictures, the volume traces and the sound listen to it.
   world::FrameSource source(given);
   check_world_limits(given, source.world(), request.limits);

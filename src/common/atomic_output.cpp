@@ -62,8 +62,15 @@ void unregister_pending(int slot) {
 // The locks this process holds, and the folders it has swept. A sweep must not take a lock
 // this process holds through another descriptor: flock would refuse it, but on NFS, where
 // flock becomes a per-process byte-range lock, it would be granted and then released.
+struct HeldLock {
+  int fd = -1;
+  int slot = -1;          // Entry in the signal-safe table of pending files.
+  std::thread::id owner;  // The thread whose OutputLocks may join it.
+  int claims = 0;         // Claims (OutputLocks taken by a run) holding it.
+  bool writer = false;    // An AtomicOutput writes its target.
+};
 std::mutex g_mutex;
-std::set<std::string> g_held_locks;
+std::map<std::string, HeldLock> g_held_locks;
 std::set<std::string> g_swept_dirs;
 
 constexpr std::string_view kPartialTag = ".partial-";
@@ -183,50 +190,80 @@ int sweep_stale_outputs(const fs::path& dir) {
   return removed;
 }
 
-AtomicOutput::AtomicOutput(fs::path target) : target_(std::move(target)) {
-  if (target_.empty()) throw Error(ExitCode::kCannotCreate, "output path is empty");
-  const fs::path dir = folder_of(target_);
+OutputLock::OutputLock(fs::path target, bool as_writer) : lock_path_(lock_path_of(target)), writer_(as_writer) {
+  const fs::path dir = folder_of(target);
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) {
     throw Error(ExitCode::kCannotCreate,
-                "cannot create '" + target_.string() + "': directory '" + dir.string() + "' does not exist");
+                "cannot create '" + target.string() + "': directory '" + dir.string() + "' does not exist");
   }
   if (::access(dir.c_str(), W_OK) != 0) {
     throw Error(ExitCode::kCannotCreate,
-                "cannot create '" + target_.string() + "': directory '" + dir.string() + "' is not writable");
+                "cannot create '" + target.string() + "': directory '" + dir.string() + "' is not writable");
   }
+  const std::string key = lock_path_.string();
+  // A sweep by another process holds a free lock for a moment: a writer is given a second
+  // to let it go before the target counts as taken.
+  for (int attempt = 0; attempt < 20; ++attempt) {
+    if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const std::lock_guard guard(g_mutex);
+    if (const auto held = g_held_locks.find(key); held != g_held_locks.end()) {
+      // This run's own claim, taken before its set-up: its writer joins it. A second writer,
+      // or another thread (two jobs naming one file), is refused like another process.
+      HeldLock& lock = held->second;
+      if (lock.owner != std::this_thread::get_id() || (as_writer && lock.writer)) break;
+      if (as_writer) {
+        lock.writer = true;
+      } else {
+        ++lock.claims;
+      }
+      return;
+    }
+    const int fd = try_lock(lock_path_);
+    if (fd < 0) continue;
+    // Only the detail of a second writer's message depends on this write, so a failure is
+    // not one of ours.
+    const std::string holder = holder_text();
+    [[maybe_unused]] const bool written = ::ftruncate(fd, 0) == 0 && ::pwrite(fd, holder.data(), holder.size(), 0) >= 0;
+    g_held_locks[key] = HeldLock{fd, register_pending(lock_path_), std::this_thread::get_id(), as_writer ? 0 : 1, as_writer};
+    return;
+  }
+  const std::string holder = read_small_file(lock_path_);
+  throw Error(ExitCode::kBusy, "'" + target.string() + "' is being written by another run (" +
+                                   (holder.empty() ? std::string("its lock is '") + key + "'" : holder) +
+                                   "); wait for it to finish, or write to another file");
+}
+
+OutputLock::~OutputLock() {
+  const std::lock_guard guard(g_mutex);
+  const auto held = g_held_locks.find(lock_path_.string());
+  if (held == g_held_locks.end()) return;
+  HeldLock& lock = held->second;
+  if (writer_) {
+    lock.writer = false;
+  } else {
+    --lock.claims;
+  }
+  if (lock.claims > 0 || lock.writer) return;
+  unregister_pending(lock.slot);
+  unlock(lock_path_, lock.fd);
+  g_held_locks.erase(held);
+}
+
+AtomicOutput::AtomicOutput(fs::path target) : target_(std::move(target)) {
+  if (target_.empty()) throw Error(ExitCode::kCannotCreate, "output path is empty");
+  std::error_code ec;
   if (fs::is_directory(target_, ec)) {
     throw Error(ExitCode::kCannotCreate, "cannot create '" + target_.string() + "': it is a directory");
   }
+  lock_.emplace(target_, /*as_writer=*/true);
+  const fs::path dir = folder_of(target_);
   bool first_in_folder = false;
   {
     const std::lock_guard guard(g_mutex);
     first_in_folder = g_swept_dirs.insert(fs::absolute(dir, ec).lexically_normal().string()).second;
   }
-  if (first_in_folder) sweep_stale_outputs(dir);
-
-  lock_path_ = lock_path_of(target_);
-  // A sweep by another process holds a free lock for a moment: a writer is given a second
-  // to let it go before the target counts as taken.
-  for (int attempt = 0; attempt < 20 && lock_fd_ < 0; ++attempt) {
-    if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    const std::lock_guard guard(g_mutex);
-    if (g_held_locks.contains(lock_path_.string())) break;
-    lock_fd_ = try_lock(lock_path_);
-    if (lock_fd_ >= 0) g_held_locks.insert(lock_path_.string());
-  }
-  if (lock_fd_ < 0) {
-    const std::string holder = read_small_file(lock_path_);
-    throw Error(ExitCode::kBusy, "'" + target_.string() + "' is being written by another run (" +
-                                     (holder.empty() ? std::string("its lock is '") + lock_path_.string() + "'" : holder) +
-                                     "); wait for it to finish, or write to another file");
-  }
-  // Only the detail of a second writer's message depends on this write, so a failure is
-  // not one of ours.
-  const std::string holder = holder_text();
-  [[maybe_unused]] const bool written =
-      ::ftruncate(lock_fd_, 0) == 0 && ::pwrite(lock_fd_, holder.data(), holder.size(), 0) >= 0;
-  lock_slot_ = register_pending(lock_path_);
+  if (first_in_folder) sweep_stale_outputs(dir);  // Our own lock is held, so it stays.
 
   const std::string name = "." + target_.filename().string() + std::string(kPartialTag) + std::to_string(::getpid()) +
                            "-" + std::to_string(g_counter.fetch_add(1)) + target_.extension().string();
@@ -244,13 +281,8 @@ AtomicOutput::~AtomicOutput() {
 
 void AtomicOutput::release() {
   unregister_pending(temp_slot_);
-  unregister_pending(lock_slot_);
-  temp_slot_ = lock_slot_ = -1;
-  if (lock_fd_ < 0) return;
-  unlock(lock_path_, lock_fd_);
-  lock_fd_ = -1;
-  const std::lock_guard guard(g_mutex);
-  g_held_locks.erase(lock_path_.string());
+  temp_slot_ = -1;
+  lock_.reset();
 }
 
 void AtomicOutput::commit() {

@@ -17,10 +17,30 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string_view>
 
 namespace systole {
+
+/// The exclusive right to write `target`: the lock on `.<name>.lock` beside it, held while
+/// this lives. A run claims its outputs before its costly set-up (building the world), so a
+/// second run of the same target is refused at once; the AtomicOutput it makes later on the
+/// same thread joins the claim instead of being refused by it. Another thread or process is
+/// refused (Error(kBusy), naming the holder), as is a second writer (`as_writer`, what
+/// AtomicOutput passes) of one target. Throws Error(kCannotCreate) if the lock file cannot
+/// be made. A folder's lock (a PNG sequence) is its own `.<folder>.lock` beside it.
+class OutputLock {
+ public:
+  explicit OutputLock(std::filesystem::path target, bool as_writer = false);
+  ~OutputLock();
+  OutputLock(const OutputLock&) = delete;
+  OutputLock& operator=(const OutputLock&) = delete;
+
+ private:
+  std::filesystem::path lock_path_;
+  bool writer_;
+};
 
 class AtomicOutput {
  public:
@@ -46,11 +66,9 @@ class AtomicOutput {
 
   std::filesystem::path target_;
   std::filesystem::path temp_;
-  std::filesystem::path lock_path_;
-  int lock_fd_ = -1;
+  std::optional<OutputLock> lock_;
   bool committed_ = false;
-  int temp_slot_ = -1;  // Entries in the signal-safe table of pending files.
-  int lock_slot_ = -1;
+  int temp_slot_ = -1;  // Entry in the signal-safe table of pending files.
 };
 
 /// Writes the file `target` whole or not at all, its contents streamed by `fill` into an

@@ -2,6 +2,10 @@
 // factor) at frame k; a loop's last frame flows into its first; captions appear only in
 // their time range and fade; title cards open the video. Small clips rendered in-process.
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +13,7 @@
 
 #include "clip/render_clip.h"
 #include "clip/video_format.h"
+#include "common/atomic_output.h"
 #include "common/error.h"
 #include "encode/encode_test_util.h"
 #include "encode/png.h"
@@ -222,6 +227,43 @@ TEST(OutputFormat, AGifFasterThan50FpsIsRefusedBeforeAnyWork) {
   EXPECT_EQ(v.exit_code, 65) << v.output;
   EXPECT_NE(v.output.find("heart.yaml:11:"), std::string::npos) << v.output;
   EXPECT_NE(v.output.find("output.fps: 60 is outside (0, 50] for a GIF"), std::string::npos) << v.output;
+}
+
+TEST(OutputFormat, ASecondRunOfOneOutputIsRefusedBeforeTheWorldIsBuilt) {
+  const fs::path dir = scratch("claimed_first");
+  // Another process holds the video, as a first run would while it renders.
+  int ready[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  const pid_t first = ::fork();
+  if (first == 0) {
+    const OutputLock held(dir / "clip.mp4");
+    const char byte = 1;
+    [[maybe_unused]] auto n = ::write(ready[1], &byte, 1);
+    for (;;) ::pause();
+  }
+  char byte = 0;
+  ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+  const scene::Scene s = scene::load_from_string(small_heart_scene("duration: 0.2 s"), "teaching.yaml", {});
+  clip::RenderRequest request;
+  request.video = dir / "clip.mp4";
+  // A world this run may not build: refused for its size only if the claim came after it.
+  request.limits.max_vertices = 1;
+  ExitCode code = ExitCode::kOk;
+  try {
+    clip::render_clip(s, request);
+  } catch (const Error& e) {
+    code = e.code();
+  }
+  ::kill(first, SIGKILL);
+  ::waitpid(first, nullptr, 0);
+  EXPECT_EQ(code, ExitCode::kBusy);
+  // Once the first run is gone, the same request fails on what it asks for.
+  try {
+    clip::render_clip(s, request);
+    ADD_FAILURE() << "a world over the limit was built";
+  } catch (const Error& e) {
+    EXPECT_NE(e.code(), ExitCode::kBusy) << e.what();
+  }
 }
 
 TEST(OutputFormat, TheDefaultPathTakesTheFormatsExtension) {

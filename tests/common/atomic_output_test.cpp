@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "common/error.h"
@@ -164,6 +165,49 @@ TEST(AtomicOutput, ASecondWriterOfOneTargetIsRefusedWithWhoHoldsIt) {
   }
   // Another target in the same folder is free all along; this one is once the writer is gone.
   EXPECT_NO_THROW(AtomicOutput(dir / "clip.mp4"));
+}
+
+TEST(OutputLock, ARunsClaimIsJoinedByItsWriterAndHeldUntilTheClaimEnds) {
+  const fs::path dir = fresh_dir("claim");
+  const fs::path target = dir / "clip.mp4";
+  {
+    const OutputLock claim(target);
+    EXPECT_TRUE(fs::exists(lock_path_of(target)));
+    {
+      AtomicOutput writer(target);  // Joins the claim instead of being refused by it.
+      write(writer.temp_path(), "the video");
+      // A second writer of the target is still refused, though the claim is this thread's.
+      EXPECT_THROW(AtomicOutput again(target), Error);
+      writer.commit();
+    }
+    EXPECT_EQ(read(target), "the video");
+    // The writer is done but the run is not: the target is still taken, for another
+    // thread (a second job) as for another process.
+    std::thread other([&] {
+      try {
+        OutputLock second(target);
+        ADD_FAILURE() << "a claim from another thread was granted";
+      } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ExitCode::kBusy) << e.what();
+      }
+    });
+    other.join();
+    EXPECT_TRUE(fs::exists(lock_path_of(target)));
+  }
+  EXPECT_EQ(names_in(dir), std::vector<std::string>{"clip.mp4"});  // The claim's lock is gone with it.
+}
+
+TEST(OutputLock, AClaimOnATargetAnotherProcessWritesIsRefusedAtOnce) {
+  const fs::path dir = fresh_dir("claim_busy");
+  ForeignWriter other(dir / "clip.mp4");
+  try {
+    OutputLock claim(dir / "clip.mp4");
+    FAIL() << "two runs of one output";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kBusy);
+    EXPECT_NE(std::string(e.what()).find("pid " + std::to_string(other.pid)), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(OutputLock(dir / "absent" / "clip.mp4"), Error) << "a missing folder";
 }
 
 TEST(AtomicOutput, LeftoversOfAKilledWriterAreSweptAndALiveWritersAreNot) {
