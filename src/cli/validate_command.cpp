@@ -43,6 +43,7 @@ Command add_validate_command(CLI::App& app) {
             // The limits `render` would apply to the default video, so a scene that passes here renders.
             const auto limits = o->allow_large ? clip::Limits::none() : clip::Limits{};
             clip::check_scene_limits(scene, {scene.output.frame_count(), true, false}, limits);
+            clip::apply_to_mesh_reader(limits);
             const world::FrameSource source(scene);
             const world::World& world = source.world();
             clip::check_world_limits(scene, world, limits);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "mesh/file_bounds.h"
 
 namespace systole::clip {
 namespace {
@@ -39,6 +40,16 @@ std::string megabytes(double bytes) {
 Limits Limits::none() {
   constexpr auto kMax = std::numeric_limits<std::int64_t>::max();
   return {kMax, std::numeric_limits<double>::infinity(), kMax, kMax, kMax};
+}
+
+void apply_to_mesh_reader(const Limits& limits) {
+  mesh::ImportLimits& reader = mesh::import_limits();
+  if (limits.max_vertices == std::numeric_limits<std::int64_t>::max()) {
+    reader = mesh::ImportLimits::none();
+  } else {
+    reader = mesh::ImportLimits{};
+    reader.max_vertices = limits.max_vertices;
+  }
 }
 
 std::int64_t estimated_output_bytes(const scene::Scene& scene, const PlannedOutput& planned) {

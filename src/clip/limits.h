@@ -37,6 +37,11 @@ std::int64_t estimated_output_bytes(const scene::Scene& scene, const PlannedOutp
 /// to lift it.
 void check_scene_limits(const scene::Scene& scene, const PlannedOutput& planned, const Limits& limits);
 
+/// Gives the mesh reader (mesh/file_bounds.h) these limits: a file holding more vertices
+/// than the world may have is refused before it is read; Limits::none() lifts the reader's
+/// limits too. Process-wide: the reader runs deep inside building the world.
+void apply_to_mesh_reader(const Limits& limits);
+
 /// Checked after the model is built and before the first step: vertex count and solver
 /// substeps over the clip. Throws Error(kDataError) like check_scene_limits.
 void check_world_limits(const scene::Scene& scene, const world::World& world, const Limits& limits);

@@ -381,6 +381,7 @@ StageTimes render_clip(const scene::Scene& given, const RenderRequest& request) 
   const std::vector<int> frames = selected_frames(request, out.frame_count());
   check_scene_limits(given, {static_cast<int>(frames.size()), !request.video.empty(), !request.png_dir.empty()},
                      request.limits);
+  apply_to_mesh_reader(request.limits);
   if (!given.audio.enabled && !request.wav.empty()) {
     throw Error(ExitCode::kUsage, "--wav: " + given.path + " has no audio: section, so there is no soundtrack to write");
   }

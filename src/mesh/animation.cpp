@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "common/error.h"
+#include "mesh/assimp_read.h"
 #include "mesh/import.h"
 
 namespace systole::mesh {
@@ -203,10 +204,7 @@ AnimationPoses import_animation(const std::filesystem::path& file, const std::ve
   check_mesh_file(file);
   Assimp::Importer importer;
   // No post-processing that moves or merges vertices: the file's own vertices, matched below.
-  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure);
-  if (scene == nullptr) {
-    throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (assimp: " + importer.GetErrorString() + ")");
-  }
+  const aiScene* scene = read_with_assimp(importer, file, aiProcess_ValidateDataStructure);
   if (scene->mNumAnimations == 0) throw Error(ExitCode::kDataError, file.string() + ": the file holds no animation");
   const aiAnimation* animation = scene->mAnimations[0];
   const double ticks_per_s = animation->mTicksPerSecond > 0 ? animation->mTicksPerSecond : 1.0;

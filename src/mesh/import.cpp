@@ -19,9 +19,12 @@
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
+#include <unordered_map>
 
 #include "common/error.h"
 #include "common/input_file.h"
+#include "mesh/assimp_read.h"
+#include "mesh/file_bounds.h"
 #include "mesh/weld.h"
 
 // assimp 5.2 as Debian builds it (ASSIMP_BUILD_DEBUG) ends the process on an internal
@@ -118,15 +121,15 @@ class FileParts {
 
  private:
   int part_named(const std::string& name) {
-    int part = mesh_.part_index(name);  // Meshes of the same name form one part.
-    if (part < 0) {
-      part = static_cast<int>(mesh_.part_names.size());
-      mesh_.part_names.push_back(name);
-    }
-    return part;
+    // Meshes of the same name form one part. Looked up by name, not by a search of the list:
+    // an atlas of 20,000 parts would cost the square of that.
+    const auto [at, added] = part_of_name_.try_emplace(name, static_cast<int>(mesh_.part_names.size()));
+    if (added) mesh_.part_names.push_back(name);
+    return at->second;
   }
 
   OrganMesh& mesh_;
+  std::unordered_map<std::string, int> part_of_name_;
   std::vector<std::pair<int, int>> ranges_;  // Per assimp mesh: first vertex, count.
 };
 
@@ -148,163 +151,11 @@ void check_readable(const std::filesystem::path& file) {
   if (!probe) throw Error(ExitCode::kNoInput, file.string() + ": cannot read mesh file");
 }
 
-// Bytes one value of a PLY property type takes at least: binary, its size; ASCII, a digit
-// and a separator.
-std::size_t ply_min_bytes(const std::string& type, bool ascii) {
-  if (ascii) return 2;
-  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if (type == "double" || type == "float64") return 8;
-  return 4;
-}
-
-// The least number of bytes the body of a PLY header's elements needs, and whether the
-// body is ASCII: the guard against headers promising more than the file holds.
-double ply_body_bytes(const std::string& header_text, bool& ascii) {
-  std::istringstream header(header_text);
-  ascii = false;
-  double min_body_bytes = 0, count = 0, element_bytes = 0;  // double: counts may be absurd
-  for (std::string line, word; std::getline(header, line);) {
-    std::istringstream words(line);
-    words >> word;
-    if (word == "format") {
-      words >> word;
-      ascii = word == "ascii";
-    } else if (word == "element") {
-      min_body_bytes += count * element_bytes;
-      words >> word >> count;
-      element_bytes = 0;
-    } else if (word == "property") {
-      words >> word;
-      if (word == "list") words >> word;  // the count's type: an empty list is just the count
-      element_bytes += static_cast<double>(ply_min_bytes(word, ascii));
-    }
-  }
-  min_body_bytes += count * element_bytes;
-  return min_body_bytes;
-}
-
-// A NUL byte in an ASCII PLY (right after end_header, fuzz_mesh found) sends assimp's
-// reader into an endless loop; ASCII PLY never holds one.
-void check_no_nul(const std::filesystem::path& file) {
-  std::ifstream whole(file, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
-  if (const std::size_t at = bytes.find('\0'); at != std::string::npos) {
-    throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (ASCII PLY with a NUL byte at offset " +
-                                          std::to_string(at) + ")");
-  }
-}
-
-// PLY files assimp 5.2 mishandles are refused before it sees them (found by
-// fuzz_mesh and the invalid-input tests; fuzz/regressions/mesh/): without `end_header` its
-// reader never returns, and a claim of 10 million vertices in a 200-byte file makes it
-// allocate and process them all. assimp picks its PLY reader by extension or by the "ply"
-// magic, so both are checked.
-void check_ply_header(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string head(64 * 1024, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".ply" && !head.starts_with("ply")) return;
-  // `end_header` must be a line of its own: assimp's reader looks for it as a line, and
-  // never ends on a header where it only appears inside another word ("floatend_header").
-  std::size_t end = std::string::npos;
-  for (std::size_t at = head.find("\nend_header"); at != std::string::npos; at = head.find("\nend_header", at + 1)) {
-    const std::size_t after = at + 11;
-    if (after == head.size() || std::string_view(" \t\r\n").find(head[after]) != std::string_view::npos) {
-      end = at + 1;
-      break;
-    }
-  }
-  if (end == std::string::npos) {
-    throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (PLY header without an end_header line)");
-  }
-  bool ascii = false;
-  const double min_body_bytes = ply_body_bytes(head.substr(0, end), ascii);
-  if (ascii) check_no_nul(file);
-  std::error_code ec;
-  const double file_bytes = static_cast<double>(std::filesystem::file_size(file, ec));
-  if (min_body_bytes > file_bytes) {
-    std::ostringstream m;
-    m << file.string() << ": cannot read as a mesh (the PLY header promises at least "
-      << static_cast<unsigned long long>(std::min(min_body_bytes, 1e18)) << " bytes of elements; the file has "
-      << static_cast<unsigned long long>(file_bytes) << ")";
-    throw Error(ExitCode::kDataError, m.str());
-  }
-}
-
-// An OFF file whose counts promise more than the file holds makes assimp 5.2 allocate for
-// them before reading a face (4 vertices and 42 quadrillion faces in 79 bytes, a 38 GB
-// allocation, found by fuzz_mesh; fuzz/regressions/mesh/). A vertex line takes at least
-// "0 0 0\n" and a face line "0\n", so the counts are checked against the file's size.
-void check_off_header(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string head(4096, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  std::istringstream words(head);
-  std::string word;
-  words >> word;
-  for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".off" && !word.ends_with("off")) return;
-  // The counts: the first three numbers after the keyword (comments start with '#').
-  double counts[3] = {0, 0, 0};
-  int found = 0;
-  for (std::string line; found < 3 && std::getline(words, line);) {
-    std::istringstream numbers(line.substr(0, line.find('#')));
-    while (found < 3 && numbers >> counts[found]) ++found;
-  }
-  std::error_code ec;
-  const double file_bytes = static_cast<double>(std::filesystem::file_size(file, ec));
-  const double min_bytes = 6 * counts[0] + 2 * counts[1];
-  if (found == 3 && min_bytes > file_bytes) {
-    std::ostringstream m;
-    m << file.string() << ": cannot read as a mesh (the OFF header promises " << counts[0] << " vertices and "
-      << counts[1] << " faces, at least " << static_cast<unsigned long long>(std::min(min_bytes, 1e18))
-      << " bytes; the file has " << static_cast<unsigned long long>(file_bytes) << ")";
-    throw Error(ExitCode::kDataError, m.str());
-  }
-}
-
-// A binary glTF whose header claims more bytes than the file holds makes assimp 5.2 allocate
-// the claim (1.7 GB for a 600-byte file, found by fuzz_mesh; fuzz/regressions/mesh/). The
-// header (magic "glTF", version, total length, then the first chunk's length) is checked
-// against the file's size first; assimp recognizes GLB by that magic whatever the extension.
-void check_glb_header(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  unsigned char head[20] = {};
-  in.read(reinterpret_cast<char*>(head), sizeof head);
-  const std::streamsize got = in.gcount();
-  if (got < 4 || std::memcmp(head, "glTF", 4) != 0) return;
-  auto u32 = [&](int at) {
-    return std::uint32_t{head[at]} | std::uint32_t{head[at + 1]} << 8 | std::uint32_t{head[at + 2]} << 16 |
-           std::uint32_t{head[at + 3]} << 24;
-  };
-  std::error_code ec;
-  const std::uintmax_t file_bytes = std::filesystem::file_size(file, ec);
-  const std::string what = file.string() + ": cannot read as a mesh (binary glTF ";
-  if (got < 20) throw Error(ExitCode::kDataError, what + "shorter than its 20-byte header)");
-  if (u32(8) != file_bytes) {
-    throw Error(ExitCode::kDataError, what + "header gives a length of " + std::to_string(u32(8)) + " bytes; the file has " +
-                                          std::to_string(file_bytes) + ")");
-  }
-  if (std::uintmax_t{u32(12)} + 20 > file_bytes) {
-    throw Error(ExitCode::kDataError, what + "first chunk claims " + std::to_string(u32(12)) + " bytes; the file has " +
-                                          std::to_string(file_bytes) + " in all)");
-  }
-}
-
 }  // namespace
 
 void check_mesh_file(const std::filesystem::path& file) {
   check_readable(file);
-  check_ply_header(file);
-  check_off_header(file);
-  check_glb_header(file);
+  check_mesh_counts(file);
 }
 
 namespace {
@@ -317,12 +168,7 @@ const aiScene* read_scene(Assimp::Importer& importer, const std::filesystem::pat
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, 0);
   const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
                          aiProcess_SortByPType | aiProcess_ValidateDataStructure;
-  const aiScene* scene = importer.ReadFile(file.string(), flags);
-  if (scene == nullptr) {
-    throw Error(ExitCode::kDataError,
-                file.string() + ": cannot read as a mesh (assimp: " + importer.GetErrorString() + ")");
-  }
-  return scene;
+  return read_with_assimp(importer, file, flags);
 }
 
 // Base names shared by several primitives, and material names, each with its meshes.
