@@ -48,16 +48,17 @@ void run_with_stack(std::size_t bytes, const std::function<void()>& work) {
   if (job.error) std::rethrow_exception(job.error);
 }
 
-/// The graph's node count and depth, walked with an explicit stack.
+/// The graph's node count and depth, walked with an explicit stack. The root stands for the
+/// file (assimp makes one up for formats with several roots): it is level 0, not counted.
 void check_graph(const aiScene& scene, const std::filesystem::path& file) {
   const ImportLimits& limits = import_limits();
   std::int64_t nodes = 0;
   std::vector<std::pair<const aiNode*, int>> stack;
-  if (scene.mRootNode != nullptr) stack.emplace_back(scene.mRootNode, 1);
+  if (scene.mRootNode != nullptr) stack.emplace_back(scene.mRootNode, 0);
   while (!stack.empty()) {
     const auto [node, depth] = stack.back();
     stack.pop_back();
-    if (++nodes > limits.max_nodes) {
+    if (depth > 0 && ++nodes > limits.max_nodes) {
       throw Error(ExitCode::kDataError, file.string() + ": the scene graph has over " + std::to_string(limits.max_nodes) +
                                             " nodes; a mesh file may hold at most that many (docs/robustness.md); pass "
                                             "--allow-large to read it anyway");
@@ -81,7 +82,12 @@ const aiScene* read_with_assimp(Assimp::Importer& importer, const std::filesyste
     scene = importer.ReadFile(file.string(), 0);
     if (scene == nullptr) return;
     check_graph(*scene, file);
-    if (post_processing != 0) scene = importer.ApplyPostProcessing(post_processing);
+    if (post_processing == 0) return;
+    try {
+      scene = importer.ApplyPostProcessing(post_processing);
+    } catch (const std::exception& e) {  // An assimp assertion (mesh/import.cpp) in a step.
+      throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (assimp: " + e.what() + ")");
+    }
   });
   if (scene == nullptr) {
     throw Error(ExitCode::kDataError, file.string() + ": cannot read as a mesh (assimp: " + importer.GetErrorString() + ")");

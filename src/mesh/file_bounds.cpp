@@ -144,7 +144,6 @@ void check_ply_header(const std::filesystem::path& file) {
   bool ascii = false;
   double vertices = 0, faces = 0;
   const double min_body_bytes = ply_body_bytes(head.substr(0, end), ascii, vertices, faces);
-  check_counts(file, "the PLY header declares", vertices, faces);
   if (ascii) check_no_nul(file);
   std::error_code ec;
   const double file_bytes = static_cast<double>(std::filesystem::file_size(file, ec));
@@ -155,6 +154,7 @@ void check_ply_header(const std::filesystem::path& file) {
       << static_cast<unsigned long long>(file_bytes) << ")";
     throw Error(ExitCode::kDataError, m.str());
   }
+  check_counts(file, "the PLY header declares", vertices, faces);
 }
 
 // An OFF file whose counts promise more than the file holds makes assimp 5.2 allocate for
@@ -179,7 +179,6 @@ void check_off_header(const std::filesystem::path& file) {
     std::istringstream numbers(line.substr(0, line.find('#')));
     while (found < 3 && numbers >> counts[found]) ++found;
   }
-  if (found == 3) check_counts(file, "the OFF header declares", counts[0], counts[1]);
   std::error_code ec;
   const double file_bytes = static_cast<double>(std::filesystem::file_size(file, ec));
   const double min_bytes = 6 * counts[0] + 2 * counts[1];
@@ -190,6 +189,7 @@ void check_off_header(const std::filesystem::path& file) {
       << " bytes; the file has " << static_cast<unsigned long long>(file_bytes) << ")";
     throw Error(ExitCode::kDataError, m.str());
   }
+  if (found == 3) check_counts(file, "the OFF header declares", counts[0], counts[1]);
 }
 
 // A binary glTF whose header claims more bytes than the file holds makes assimp 5.2 allocate
@@ -462,23 +462,11 @@ class GltfGraph : public nlohmann::json_sax<nlohmann::json> {
   std::vector<Frame> frames_;
 };
 
-void check_gltf(const std::filesystem::path& file, bool binary) {
-  if (!binary && lowercase_extension(file) != ".gltf") return;
-  const ImportLimits& limits = import_limits();
+/// Walks the graph from its roots, depth first with an explicit stack: every node must be
+/// reached once (glTF requires a tree), no deeper than the limit. Returns the vertices the
+/// nodes place, each placement of a mesh counted.
+double placed_vertices(const GltfGraph& graph, const ImportLimits& limits, const std::filesystem::path& file) {
   const std::string what = file.string() + ": cannot read as a mesh (glTF ";
-  GltfGraph graph(limits);
-  const bool read = nlohmann::json::sax_parse(gltf_json(file, binary), &graph);
-  if (graph.broken == "nodes") {
-    throw Error(ExitCode::kDataError, file.string() + ": the glTF scene graph has over " + grouped(double(limits.max_nodes)) +
-                                          " nodes; a mesh file may hold at most that many (docs/robustness.md); pass "
-                                          "--allow-large to read it anyway");
-  }
-  if (graph.broken == "json depth") {
-    throw Error(ExitCode::kDataError, what + "JSON nested over " + std::to_string(limits.max_json_depth) + " levels deep)");
-  }
-  if (!read) return;  // Not JSON: assimp says so in its own words.
-  // Every node is reached once from the roots (glTF requires a tree): depth first, with an
-  // explicit stack, counting the vertices each placed mesh brings.
   const std::size_t nodes = graph.children.size();
   std::vector<char> has_parent(nodes, 0), reached(nodes, 0), root_done(nodes, 0);
   for (const auto& children : graph.children) {
@@ -493,7 +481,7 @@ void check_gltf(const std::filesystem::path& file, bool binary) {
   for (const std::size_t root : graph.scene_roots) {
     if (root < nodes) stack.emplace_back(root, 1);
   }
-  double placed_vertices = 0;
+  double placed = 0;
   while (!stack.empty()) {
     const auto [n, depth] = stack.back();
     stack.pop_back();
@@ -515,7 +503,7 @@ void check_gltf(const std::filesystem::path& file, bool binary) {
     const std::int64_t mesh = graph.node_mesh[n];
     if (mesh >= 0 && static_cast<std::size_t>(mesh) < graph.mesh_positions.size()) {
       for (const std::size_t accessor : graph.mesh_positions[static_cast<std::size_t>(mesh)]) {
-        if (accessor < graph.accessor_count.size()) placed_vertices += graph.accessor_count[accessor];
+        if (accessor < graph.accessor_count.size()) placed += graph.accessor_count[accessor];
       }
     }
     for (const std::size_t child : graph.children[n]) {
@@ -529,7 +517,25 @@ void check_gltf(const std::filesystem::path& file, bool binary) {
                                             " is part of a cycle: no root leads to it, and glTF requires a tree)");
     }
   }
-  check_counts(file, "the glTF nodes place", placed_vertices, 0);
+  return placed;
+}
+
+void check_gltf(const std::filesystem::path& file, bool binary) {
+  if (!binary && lowercase_extension(file) != ".gltf") return;
+  const ImportLimits& limits = import_limits();
+  const std::string what = file.string() + ": cannot read as a mesh (glTF ";
+  GltfGraph graph(limits);
+  const bool read = nlohmann::json::sax_parse(gltf_json(file, binary), &graph);
+  if (graph.broken == "nodes") {
+    throw Error(ExitCode::kDataError, file.string() + ": the glTF scene graph has over " + grouped(double(limits.max_nodes)) +
+                                          " nodes; a mesh file may hold at most that many (docs/robustness.md); pass "
+                                          "--allow-large to read it anyway");
+  }
+  if (graph.broken == "json depth") {
+    throw Error(ExitCode::kDataError, what + "JSON nested over " + std::to_string(limits.max_json_depth) + " levels deep)");
+  }
+  if (!read) return;  // Not JSON: assimp says so in its own words.
+  check_counts(file, "the glTF nodes place", placed_vertices(graph, limits, file), 0);
 }
 
 }  // namespace
