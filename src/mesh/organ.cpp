@@ -232,7 +232,11 @@ OrganGeometry build_organ_geometry(const scene::Organ& organ) {
     throw Error(ExitCode::kDataError, label + ": the surface has no triangles");
   }
   place(geometry.mesh, organ.mesh, organ.transform);
-  if (!organ.mesh.file.empty()) check_organ_size(geometry.mesh, organ, label);
+  if (!organ.mesh.file.empty()) {
+    // Units given by a -D are the likely cause of a wrong size: the message names that -D.
+    const bool units_overridden = organ.mesh.units_origin.file.starts_with("-D");
+    check_organ_size(geometry.mesh, organ, units_overridden ? where(organ.mesh.units_origin) + "organ '" + organ.name + "'" : label);
+  }
 
   geometry.report = inspect(geometry.mesh.surface);
   // A closed surface that faces inwards is turned outwards: normals and volume need it.

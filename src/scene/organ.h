@@ -73,6 +73,7 @@ struct MeshSource {
   double unit_m = 1;       ///< Length of one file unit in metres (mm = 0.001). unit: m
   bool center = true;      ///< Move the file's bounding-box centre to the origin.
   Origin origin;
+  Origin units_origin;     ///< Where `units` was given (a file line, or a -D); empty file: not given.
 };
 
 struct Transform {

@@ -14,6 +14,20 @@ double Output::frame_period_s() const {
 
 double Output::organ_time_s(int frame) const { return (start_frame + frame) * frame_period_s(); }
 
+bool anything_can_move(const Scene& scene) {
+  if (!scene.interactions.empty()) return true;
+  const auto drives = [](const Drive& d) { return d.waveform != Waveform::kNone && d.amplitude > 0; };
+  for (const Organ& organ : scene.organs) {
+    if (drives(organ.body.volume_drive)) return true;
+    if (organ.regions.empty() && scene.gravity.squaredNorm() > 0) return true;  // One passive body.
+    for (const Region& region : organ.regions) {
+      if (drives(region.drive) || !region.motion.empty()) return true;
+      if (!region.pinned && scene.gravity.squaredNorm() > 0) return true;
+    }
+  }
+  return false;
+}
+
 std::vector<PixelRect> view_rectangles(int width, int height, int view_count) {
   std::vector<PixelRect> rects;
   if (view_count < 1) return rects;

@@ -42,4 +42,9 @@ struct Scene {
   Audio audio;                     ///< The soundtrack; off unless the scene has `audio:`.
 };
 
+/// Whether anything in the scene can move: a region's drive or volume drive (amplitude
+/// above 0), a pinned region's motion, a poke or a grab, or gravity on a region that is not
+/// pinned. A scene with none of these shows a still organ (world::FrameSource warns).
+bool anything_can_move(const Scene& scene);
+
 }  // namespace systole::scene

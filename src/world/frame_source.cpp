@@ -4,11 +4,16 @@
 #include <string>
 
 #include "common/error.h"
+#include "common/warning.h"
 #include "sim/solvers/step.h"
 
 namespace systole::world {
 
 FrameSource::FrameSource(const scene::Scene& scene) : world_(build_world(scene)) {
+  if (!scene::anything_can_move(scene)) {
+    warn(scene.path + ": nothing in this scene can move: no region has a drive or a volume drive with an amplitude, "
+         "no pinned region has a motion, and there is no poke, grab or gravity; every frame shows the organ at rest");
+  }
   // The one dispatch point of the world's steps: count them, then tell every listener.
   world_.after_step = [this](int organ, const OrganBody& body) {
     ++steps_taken_;

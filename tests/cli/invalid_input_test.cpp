@@ -202,6 +202,15 @@ TEST(InvalidInput, MeshesNoOrganCouldBeAreRefusedWithTheUnitsToWrite) {
                   "`units: m` (then it is 17.3 cm across)");
 }
 
+TEST(InvalidInput, WrongUnitsGivenByADefineNameTheDefineNotTheScenesLine) {
+  const Project p("units_from_define");
+  write_file(p.dir / "organ.obj", tetrahedra(0.05, false, false));
+  write_file(p.scene, mesh_scene("organ.obj", "m"));
+  expect_rejected(p, p.render("-D organs.0.mesh.units=mm"), 65,
+                  "-D organs.0.mesh.units=mm: organ 'organ': the mesh is 0.000173 m across, but an organ is 5 mm to 2 m "
+                  "across, so its units are wrong; write `units: m`");
+}
+
 TEST(InvalidInput, MissingAndUnreadableMeshPathsNameTheLine) {
   const Project p("mesh_missing", mesh_scene("nowhere/organ.obj"));
   expect_rejected(p, p.render(), 66, p.scene.string() + ":3:18: organs[0].mesh.file: mesh file " + (p.dir / "nowhere/organ.obj").string() + " is not found");

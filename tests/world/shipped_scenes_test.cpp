@@ -51,6 +51,7 @@ TEST(Scenes, EveryShippedSceneValidatesAndRenders) {
     const std::string name = scene.stem().string();
     const RunResult v = run(systole() + " validate " + scene.string());
     EXPECT_EQ(v.exit_code, 0) << name << ":\n" << v.output;
+    EXPECT_EQ(v.output.find("warning:"), std::string::npos) << name << ":\n" << v.output;
     // Shipped clips are 8-12 s of video (title cards and slow motion included; a loop, which
     // repeats, at least 4 s), with a header comment saying what they teach.
     const scene::Scene s = scene::load(scene);

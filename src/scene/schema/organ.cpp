@@ -215,6 +215,7 @@ ValueSpec<MeshSource> mesh_spec() {
       },
       [](const Node& node, MeshSource& m, const std::string& path, const Context& ctx) {
         m.origin = node.origin;
+        if (node.find("units") != nullptr) m.units_origin = origin_of(node, "units");
         const bool has_file = node.find("file") != nullptr, has_procedural = node.find("procedural") != nullptr;
         if (has_file == has_procedural)
           fail(node.origin, path,
