@@ -59,7 +59,7 @@ void check_graph(const aiScene& scene, const std::filesystem::path& file) {
     const auto [node, depth] = stack.back();
     stack.pop_back();
     if (depth > 0 && ++nodes > limits.max_nodes) {
-      throw Error(ExitCode::kDataError, file.string() + ": the scene graph has over " + std::to_string(limits.max_nodes) +
+      throw Error(ExitCode::kDataError, file.string() + ": the scene graph has over " + grouped(double(limits.max_nodes)) +
                                             " nodes; a mesh file may hold at most that many (docs/robustness.md); pass "
                                             "--allow-large to read it anyway");
     }

@@ -31,15 +31,6 @@ ImportLimits& import_limits() {
   return limits;
 }
 
-namespace {
-
-std::string lowercase_extension(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
-
-/// "2,100,000": counts as a reader checks them against a limit.
 std::string grouped(double count) {
   const std::string digits = std::to_string(static_cast<unsigned long long>(std::min(count, 1e18)));
   std::string text;
@@ -48,6 +39,14 @@ std::string grouped(double count) {
     text.push_back(digits[i]);
   }
   return text;
+}
+
+namespace {
+
+std::string lowercase_extension(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
 }
 
 [[noreturn]] void over_limit(const std::filesystem::path& file, const std::string& what, double count, double limit,

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 
 namespace systole::mesh {
 
@@ -24,6 +25,9 @@ struct ImportLimits {
 
 /// The limits this process applies; `--allow-large` lifts them for the run.
 ImportLimits& import_limits();
+
+/// "2,100,000": a count as the limits' messages give it.
+std::string grouped(double count);
 
 /// Refuses a file whose headers promise more than it holds, more than the limits allow, or
 /// that is cut short (an OBJ's last record stops midway, a binary STL holds fewer triangles

@@ -1,58 +1,24 @@
 // ctest-labels: no-sanitizers
-// The scenes that exhausted the machine before the parse bounds (docs/robustness.md,
-// "Resource limits"), run through the real command line: an alias bomb in the file and in a
-// -D value, 200,000 keys, a megabyte of nesting. Each must be refused with exit 65 within 2 s
-// of CPU time and under 200 MB of peak memory, as the process itself measures them (wait4's
-// rusage). CPU time, not wall time, so a busy machine does not make the test flaky; no
-// sanitizers, whose shadow memory would be measured too.
-
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
+// The hostile-input corpus, scenes (tests/hostile/README.md): the scenes that exhausted the
+// machine before the parse bounds (docs/robustness.md, "Resource limits"), run through the
+// real command line: an alias bomb in the file and in a -D value, 200,000 keys, a megabyte
+// of nesting, long -D values, a 4 GiB file, bytes that are not UTF-8. Each must be refused
+// with exit 65 within 2 s of CPU time and under 200 MB of peak memory, as the process itself
+// measures them (wait4's rusage). CPU time, not wall time, so a busy machine does not make
+// the test flaky; no sanitizers, whose shadow memory would be measured too.
 
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
+#include "support/measure.h"
 #include "support/run.h"
-
-extern char** environ;
 
 namespace systole::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Measured {
-  int exit_code = -1;
-  double cpu_s = 0;
-  double peak_mb = 0;
-};
-
-/// Runs systole with `args` (stderr to /dev/null) and measures it.
-Measured measure(std::vector<std::string> args) {
-  args.insert(args.begin(), SYSTOLE_BINARY);
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  Measured m;
-  const int spawned = posix_spawn(&pid, SYSTOLE_BINARY, &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return m;
-  int status = 0;
-  rusage usage{};
-  ::wait4(pid, &status, 0, &usage);
-  m.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  m.cpu_s = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-  m.peak_mb = usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux.
-  return m;
-}
 
 /// Nine levels of nine aliases each: 387 million values once expanded.
 std::string laughs(const std::string& indent, const std::string& separator) {
@@ -110,6 +76,27 @@ TEST(ParseBounds, LongDefineValuesCostMemoryInProportionAndAreNotEchoedWhole) {
   EXPECT_NE(r.output.find("-D camera={key0: 1, key1: 1,"), std::string::npos) << r.output.substr(0, 500);
   EXPECT_NE(r.output.find("(" + std::to_string(map.size()) + " characters)"), std::string::npos) << r.output.substr(0, 500);
   EXPECT_EQ(r.output.find("key8999"), std::string::npos) << "the value is not echoed whole";
+}
+
+TEST(ParseBounds, A120KilobyteDefineUnderAThreeGigabyteCapIsAParseErrorNotOutOfMemory) {
+  const fs::path dir = scratch("parse_bounds_capped");
+  write_file(dir / "plain.yaml", kOrgans);
+  std::string list = "organs.0.regions=[";
+  for (int k = 0; k < 17000; ++k) list += "123456,";
+  list += "1]";
+  ASSERT_GT(list.size(), 119000u);
+  const Measured m = measure({"validate", (dir / "plain.yaml").string(), "-D", list}, 3LL << 30);
+  expect_refused_cheaply("a 120 KB -D list under a 3 GB cap", m);
+  EXPECT_NE(m.errors.find("organs[0].regions: expected 0..256 items; got 17001"), std::string::npos) << m.errors.substr(0, 500);
+  EXPECT_EQ(m.errors.find("frame size"), std::string::npos) << "no advice that does not apply";
+}
+
+TEST(ParseBounds, AGarbageSceneIsRefusedWithItsBytesEscaped) {
+  const fs::path dir = scratch("parse_bounds_garbage");
+  write_file(dir / "garbage.yaml", "organs:\n  - name: \xff\xfeheart\x01\n");
+  const Measured m = measure({"validate", (dir / "garbage.yaml").string()});
+  expect_refused_cheaply("a scene with bytes that are not UTF-8", m);
+  EXPECT_NE(m.errors.find("got \"\\xff\\xfeheart\\x01\""), std::string::npos) << m.errors;
 }
 
 TEST(ParseBounds, AHugeSceneFileIsRefusedByItsSizeBeforeItIsRead) {
