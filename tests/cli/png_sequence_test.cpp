@@ -1,3 +1,4 @@
+// ctest-labels: slow-under-sanitizers
 // An interrupted `--png DIR` run never leaves a mixed sequence (issue 38): after a full
 // render, a second render in another colour stopped at any moment - SIGINT, SIGTERM,
 // SIGKILL, a full disk - leaves the earlier frames and every other file in DIR byte for
