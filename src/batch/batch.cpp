@@ -23,6 +23,7 @@
 #include "clip/video_format.h"
 #include "common/atomic_output.h"
 #include "common/error.h"
+#include "common/interrupt.h"
 #include "common/json.h"
 #include "scene/content_hash.h"
 #include "scene/load.h"
@@ -474,6 +475,8 @@ std::vector<JobResult> run_jobs(const std::vector<Job>& jobs, const BatchOptions
     }
     ::close(it->second.fd);
     running.erase(it);
+    // Written by a child: this process's interrupt message names it too (common/interrupt.h).
+    if (r.status == JobResult::Status::kDone) note_output_written(r.output);
     on_done(r);
   }
   return results;

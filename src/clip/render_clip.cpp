@@ -24,6 +24,7 @@
 #include "encode/webvtt.h"
 #include "common/atomic_output.h"
 #include "common/error.h"
+#include "common/folder_update.h"
 #include "encode/png.h"
 #include "encode/video_writer.h"
 #include "mesh/normals.h"
@@ -355,15 +356,14 @@ class ClipFrames {
 
 /// The run's claims on what it writes, taken before the world is built: a second run of the
 /// same output is refused at once, not after the costly set-up. The writers opened later
-/// join them (common/atomic_output.h). A PNG folder is claimed as a whole, its parents made
-/// first as its writer would.
+/// join them (common/atomic_output.h). A PNG folder is claimed as a whole, named as its
+/// writer names it (common/folder_update.h), its parents made first as its writer would.
 std::deque<OutputLock> claim_outputs(const RenderRequest& request) {
   std::deque<OutputLock> claims;  // Locks neither copy nor move: a deque builds them in place.
   if (!request.video.empty()) claims.emplace_back(request.video);
   if (!request.wav.empty()) claims.emplace_back(request.wav);
   if (!request.png_dir.empty()) {
-    const std::filesystem::path folder =
-        request.png_dir.has_filename() ? request.png_dir : request.png_dir.parent_path();  // "frames/"
+    const std::filesystem::path folder = update_folder_of(request.png_dir);
     std::error_code ec;
     if (folder.has_parent_path()) std::filesystem::create_directories(folder.parent_path(), ec);
     if (ec) throw Error(ExitCode::kCannotCreate, "cannot create '" + folder.parent_path().string() + "': " + ec.message());

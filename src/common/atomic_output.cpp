@@ -5,7 +5,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <array>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -21,43 +20,13 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/interrupt.h"
 
 namespace systole {
 namespace fs = std::filesystem;
 namespace {
 
-// Temporary and lock paths live in a fixed table of plain char buffers so a signal handler
-// can unlink them without allocating or locking.
-constexpr int kMaxPending = 128;
-constexpr std::size_t kMaxPath = 4096;
-enum SlotState : int { kFree = 0, kClaimed = 1, kReady = 2 };
-// The handler reads slot states on whichever thread the signal lands (the frame loop's
-// stages run on their own threads): only a lock-free atomic is safe there.
-static_assert(std::atomic<int>::is_always_lock_free);
-struct PendingSlot {
-  std::atomic<int> state{kFree};
-  char path[kMaxPath] = {};
-};
-std::array<PendingSlot, kMaxPending> g_pending;
 std::atomic<unsigned> g_counter{0};
-
-int register_pending(const fs::path& p) {
-  const std::string s = p.string();
-  if (s.size() >= kMaxPath) return -1;
-  for (int i = 0; i < kMaxPending; ++i) {
-    int expected = kFree;
-    if (g_pending[i].state.compare_exchange_strong(expected, kClaimed)) {
-      std::memcpy(g_pending[i].path, s.c_str(), s.size() + 1);
-      g_pending[i].state.store(kReady);
-      return i;
-    }
-  }
-  return -1;  // Table full: the destructor still cleans up; only a signal would miss it.
-}
-
-void unregister_pending(int slot) {
-  if (slot >= 0) g_pending[slot].state.store(kFree);
-}
 
 // The locks this process holds, and the folders it has swept. A sweep must not take a lock
 // this process holds through another descriptor: flock would refuse it, but on NFS, where
@@ -225,7 +194,7 @@ OutputLock::OutputLock(fs::path target, bool as_writer) : lock_path_(lock_path_o
     // not one of ours.
     const std::string holder = holder_text();
     [[maybe_unused]] const bool written = ::ftruncate(fd, 0) == 0 && ::pwrite(fd, holder.data(), holder.size(), 0) >= 0;
-    g_held_locks[key] = HeldLock{fd, register_pending(lock_path_), std::this_thread::get_id(), as_writer ? 0 : 1, as_writer};
+    g_held_locks[key] = HeldLock{fd, register_pending_file(lock_path_), std::this_thread::get_id(), as_writer ? 0 : 1, as_writer};
     return;
   }
   const std::string holder = read_small_file(lock_path_);
@@ -268,7 +237,7 @@ AtomicOutput::AtomicOutput(fs::path target) : target_(std::move(target)) {
   const std::string name = "." + target_.filename().string() + std::string(kPartialTag) + std::to_string(::getpid()) +
                            "-" + std::to_string(g_counter.fetch_add(1)) + target_.extension().string();
   temp_ = dir / name;
-  temp_slot_ = register_pending(temp_);
+  temp_slot_ = register_pending_file(temp_);
 }
 
 AtomicOutput::~AtomicOutput() {
@@ -286,12 +255,19 @@ void AtomicOutput::release() {
 }
 
 void AtomicOutput::commit() {
-  std::error_code ec;
-  fs::rename(temp_, target_, ec);
-  if (ec) {
-    throw Error(ExitCode::kIoError, "cannot move '" + temp_.string() + "' to '" + target_.string() + "': " + ec.message());
+  {
+    // A signal now waits for the rename and its note, so the handler's message is true.
+    const InterruptsWait commit;
+    std::error_code ec;
+    fs::rename(temp_, target_, ec);
+    if (ec) {
+      throw Error(ExitCode::kIoError, "cannot move '" + temp_.string() + "' to '" + target_.string() + "': " + ec.message());
+    }
+    committed_ = true;
+    note_output_written(target_);
+    unregister_pending(temp_slot_);
+    temp_slot_ = -1;
   }
-  committed_ = true;
   release();
 }
 
@@ -309,12 +285,6 @@ void write_atomically(const fs::path& target, const std::function<void(std::ostr
 
 void write_file_atomically(const fs::path& target, std::string_view bytes) {
   write_atomically(target, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
-}
-
-void remove_pending_outputs_signal_safe() {
-  for (auto& slot : g_pending) {
-    if (slot.state.load() == kReady) ::unlink(slot.path);
-  }
 }
 
 }  // namespace systole

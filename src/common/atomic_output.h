@@ -4,8 +4,9 @@
 //
 // Data goes to a temporary file beside the target (same directory, so the final rename is
 // atomic on POSIX file systems); commit() renames it over the target. Destroyed without
-// commit() - an error, an exception, an interrupt - the temporary is removed and any
-// earlier output stays untouched.
+// commit() - an error, an exception, an interrupt (common/interrupt.h) - the temporary is
+// removed and any earlier output stays untouched. A set of files that must replace their
+// namesakes in a folder together (a PNG sequence) is common/folder_update.h's job.
 //
 // While it lives, an AtomicOutput holds an exclusive lock on `.<name>.lock` beside the
 // target (flock: released by the kernel when the process dies, however it dies; on NFS
@@ -89,9 +90,5 @@ std::filesystem::path lock_path_of(const std::filesystem::path& target);
 /// Returns how many files it removed; errors reading the folder are ignored (a sweep is
 /// housekeeping, never a reason to fail a run).
 int sweep_stale_outputs(const std::filesystem::path& dir);
-
-/// Removes every temporary and lock file still registered by a live AtomicOutput. Safe to
-/// call from a signal handler (it uses only unlink on pre-built paths).
-void remove_pending_outputs_signal_safe();
 
 }  // namespace systole

@@ -61,7 +61,7 @@ GifWriter::GifWriter(const std::filesystem::path& target, const GifSettings& s) 
   if (std::FILE* probe = std::fopen(impl_->output.temp_path().c_str(), "wb")) {
     std::fclose(probe);
   } else {
-    throw Error(ExitCode::kCannotCreate, "cannot create '" + impl_->output.temp_path().string() + "': " + std::strerror(errno));
+    throw Error(ExitCode::kCannotCreate, "cannot create '" + impl_->output.target().string() + "': " + std::strerror(errno));
   }
   impl_->store = std::tmpfile();
   if (impl_->store == nullptr) fail(ExitCode::kCannotCreate, std::string("cannot create a temporary file: ") + std::strerror(errno));

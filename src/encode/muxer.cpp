@@ -22,7 +22,7 @@ Muxer::~Muxer() {
 void Muxer::write_header(const std::vector<std::pair<const char*, const char*>>& options) {
   int err = avio_open(&format_->pb, output_.temp_path().c_str(), AVIO_FLAG_WRITE);
   if (err < 0) {
-    throw Error(ExitCode::kCannotCreate, "cannot create '" + output_.temp_path().string() + "': " + av_error_text(err));
+    throw Error(ExitCode::kCannotCreate, "cannot create '" + output_.target().string() + "': " + av_error_text(err));
   }
   AVDictionary* dictionary = nullptr;
   for (const auto& [key, value] : options) av_dict_set(&dictionary, key, value, 0);
@@ -41,7 +41,7 @@ void Muxer::write(AVPacket* packet, AVRational time_base, const AVStream* stream
   av_packet_unref(packet);
   if (err < 0) {
     throw Error(ExitCode::kIoError,
-                label_ + " encoder: cannot write to '" + output_.temp_path().string() + "': " + av_error_text(err));
+                label_ + " encoder: cannot write to '" + output_.target().string() + "': " + av_error_text(err));
   }
 }
 
@@ -52,7 +52,7 @@ void Muxer::finish() {
   }
   err = avio_closep(&format_->pb);
   if (err < 0) {
-    throw Error(ExitCode::kIoError, label_ + " encoder: cannot close '" + output_.temp_path().string() + "': " + av_error_text(err));
+    throw Error(ExitCode::kIoError, label_ + " encoder: cannot close '" + output_.target().string() + "': " + av_error_text(err));
   }
 }
 

@@ -20,7 +20,8 @@ class Muxer {
   /// The context of libavformat's muxer `name` ("mp4", "gif", ...) for `output`'s
   /// temporary, bit-exact (no random IDs, dates or library versions: the same packets give
   /// the same bytes). The format is forced: a temporary's name is nothing to guess it from.
-  /// Errors throw Error with "<label> encoder: ...". `output` must outlive the Muxer.
+  /// Errors throw Error with "<label> encoder: ...", naming the target the user asked for (not
+  /// the hidden temporary). `output` must outlive the Muxer.
   Muxer(const AtomicOutput& output, const char* name, std::string label);
   /// Closes the file if still open and frees the context (and its streams).
   ~Muxer();

@@ -22,6 +22,7 @@ namespace {
 struct PngStatus {
   char message[256] = {};
   char warning[256] = {};  // The last warning: libpng often explains an error there first.
+  int io_errno = 0;        // Why the file could not be written (libpng says only "Write Error").
 };
 
 void on_png_error(png_structp png, png_const_charp message) {
@@ -37,6 +38,7 @@ void on_png_warning(png_structp png, png_const_charp message) {
 }
 
 std::string describe(const PngStatus& status) {
+  if (status.io_errno != 0) return std::strerror(status.io_errno);
   std::string text = status.message[0] != '\0' ? status.message : "out of memory";
   if (status.warning[0] != '\0') text += std::string("; ") + status.warning;
   return text;
@@ -108,6 +110,24 @@ struct Writer {
   }
 };
 
+// libpng's own write function reports a failed fwrite as "Write Error" and drops errno:
+// these keep it, so a full disk says "No space left on device".
+void write_to_file(png_structp png, png_bytep data, png_size_t length) {
+  auto* w = static_cast<Writer*>(png_get_io_ptr(png));
+  if (std::fwrite(data, 1, length, w->file) != length) {
+    w->status.io_errno = errno != 0 ? errno : EIO;
+    png_error(png, "Write Error");
+  }
+}
+
+void flush_file(png_structp png) {
+  auto* w = static_cast<Writer*>(png_get_io_ptr(png));
+  if (std::fflush(w->file) != 0) {
+    w->status.io_errno = errno != 0 ? errno : EIO;
+    png_error(png, "Flush Error");
+  }
+}
+
 bool write_rgb(Writer& w, const Image& image, std::vector<png_bytep>& rows) {
   w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w.status, on_png_error, on_png_warning);
   if (w.png == nullptr) return false;
@@ -115,7 +135,7 @@ bool write_rgb(Writer& w, const Image& image, std::vector<png_bytep>& rows) {
   if (w.info == nullptr) return false;
   if (setjmp(png_jmpbuf(w.png))) return false;
 
-  png_init_io(w.png, w.file);
+  png_set_write_fn(w.png, &w, write_to_file, flush_file);
   // Level 3 is several times faster than the default 6 for a few percent more bytes:
   // frame sequences are written at video rate.
   png_set_compression_level(w.png, 3);
@@ -130,33 +150,37 @@ bool write_rgb(Writer& w, const Image& image, std::vector<png_bytep>& rows) {
   return true;
 }
 
-}  // namespace
-
-void write_png(const std::filesystem::path& path, const Image& image) {
+/// Writes `image` to the new file `file` (not atomically: the caller's temporary or staged
+/// file). Messages name `shown`, the file the user asked for.
+void write_png_file(const std::filesystem::path& file, const std::filesystem::path& shown, const Image& image) {
   if (image.empty() || image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
-    throw Error(ExitCode::kInternal, "cannot write '" + path.string() + "': the image is " +
+    throw Error(ExitCode::kInternal, "cannot write '" + shown.string() + "': the image is " +
                                          std::to_string(image.width) + "x" + std::to_string(image.height) +
                                          " with " + std::to_string(image.rgb.size()) + " bytes");
   }
-  AtomicOutput output(path);
   std::vector<png_bytep> rows;
-  {
-    Writer w;
-    w.file = std::fopen(output.temp_path().c_str(), "wb");
-    if (w.file == nullptr) {
-      throw Error(ExitCode::kCannotCreate, "cannot create '" + output.temp_path().string() +
-                                               "': " + std::strerror(errno));
-    }
-    if (!write_rgb(w, image, rows)) {
-      throw Error(ExitCode::kIoError, "cannot write '" + path.string() + "': " + describe(w.status));
-    }
-    FILE* file = w.file;
-    w.file = nullptr;
-    // fclose flushes: a full disk shows here.
-    if (std::ferror(file) != 0 || std::fclose(file) != 0) {
-      throw Error(ExitCode::kIoError, "cannot write '" + path.string() + "': " + std::strerror(errno));
-    }
+  Writer w;
+  w.file = std::fopen(file.c_str(), "wb");
+  if (w.file == nullptr) {
+    throw Error(ExitCode::kCannotCreate, "cannot create '" + shown.string() + "': " + std::strerror(errno));
   }
+  errno = 0;
+  if (!write_rgb(w, image, rows)) {
+    throw Error(ExitCode::kIoError, "cannot write '" + shown.string() + "': " + describe(w.status));
+  }
+  FILE* written = w.file;
+  w.file = nullptr;
+  // fclose flushes: a full disk shows here.
+  if (std::ferror(written) != 0 || std::fclose(written) != 0) {
+    throw Error(ExitCode::kIoError, "cannot write '" + shown.string() + "': " + std::strerror(errno));
+  }
+}
+
+}  // namespace
+
+void write_png(const std::filesystem::path& path, const Image& image) {
+  AtomicOutput output(path);
+  write_png_file(output.temp_path(), path, image);
   output.commit();
 }
 
@@ -194,17 +218,13 @@ std::string frame_file_name(int index, int frame_count) {
 }
 
 PngSequenceWriter::PngSequenceWriter(const std::filesystem::path& folder, int frame_count)
-    : folder_(folder), frame_count_(frame_count) {
-  std::error_code ec;
-  std::filesystem::create_directories(folder_, ec);
-  if (ec || !std::filesystem::is_directory(folder_)) {
-    throw Error(ExitCode::kCannotCreate, "cannot create the frame folder '" + folder_.string() + "': " +
-                                             (ec ? ec.message() : "a file has that name"));
-  }
-}
+    : update_(folder), frame_count_(frame_count) {}
 
 void PngSequenceWriter::write(const Image& image, int frame_index) {
-  write_png(folder_ / frame_file_name(frame_index, frame_count_), image);
+  const std::string name = frame_file_name(frame_index, frame_count_);
+  write_png_file(update_.staged_path(name), update_.folder() / name, image);
 }
+
+void PngSequenceWriter::finish() { update_.commit(); }
 
 }  // namespace systole::encode

@@ -164,5 +164,22 @@ TEST(Batch, KillingABatchStopsItsChildrenAndRemovesTheirTemporaries) {
   EXPECT_TRUE(fs::is_empty(dir / "out"));
 }
 
+TEST(Batch, AnInterruptedBatchNamesTheOutputsItHadFinished) {
+  const auto dir = two_scenes("interrupted_batch");
+  const fs::path log = dir / "stdout.jsonl";
+  // One job at a time; once the first reports done, the batch is sent SIGTERM.
+  const std::string cmd = systole() + " render " + (dir / "scenes").string() +
+                          " -D output.width=96 -D output.height=64 -D output.duration=4s -D output.antialias=0" +
+                          " --jobs 1 --progress json -o " + (dir / "out").string() + " > " + log.string();
+  const auto r = run("sh -c '" + cmd + " & pid=$!; i=0; while ! grep -q \"status.: .done\" " + log.string() +
+                     " 2>/dev/null && [ $i -lt 1000 ]; do sleep 0.02; i=$((i+1)); done; kill -TERM $pid; wait $pid'");
+  EXPECT_EQ(r.exit_code, 143) << r.output;
+  const std::string first = read_file(log).find("\"job\": \"one\", \"status\": \"done\"") != std::string::npos ? "one" : "two";
+  EXPECT_NE(r.output.find("interrupted; written before it: '" + (dir / "out" / (first + ".mp4")).string() +
+                          "'; what was being written was not"),
+            std::string::npos)
+      << "the batch's own message names the job it finished:\n" << r.output;
+}
+
 }  // namespace
 }  // namespace systole::test

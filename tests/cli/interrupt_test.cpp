@@ -4,20 +4,16 @@
 // error. In every case the earlier video and its manifest stay byte for byte as they were.
 // And two renders to one output: exactly one writes it.
 
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
-#include <sys/mount.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <gtest/gtest.h>
 #include <thread>
 
+#include "support/background.h"
 #include "support/run.h"
-
-extern char** environ;
+#include "support/small_disk.h"
 
 namespace systole::test {
 namespace {
@@ -66,52 +62,28 @@ fs::path partial_of(const fs::path& target) {
   return {};
 }
 
+/// The arguments of a long render of the heart to `video`.
+std::vector<std::string> long_render_args(const fs::path& video, const std::vector<std::string>& extra) {
+  std::vector<std::string> args = {"render", source("scenes/heart.yaml"), "-D", "output.width=160", "-D",
+                                   "output.height=120", "-D", "output.duration=60 s", "-o", video.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
 /// A long render of the heart to `video`, in the background.
-struct LongRender {
-  pid_t pid = -1;
-  fs::path log;
-  LongRender(const fs::path& video, const std::vector<std::string>& extra = {}) : log(video.parent_path() / "stderr.txt") {
-    std::vector<std::string> args = {SYSTOLE_BINARY, "render", source("scenes/heart.yaml"), "-D", "output.width=160",
-                                     "-D", "output.height=120", "-D", "output.duration=60 s", "-o", video.string()};
-    args.insert(args.end(), extra.begin(), extra.end());
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (posix_spawn(&pid, SYSTOLE_BINARY, &actions, nullptr, argv.data(), environ) != 0) pid = -1;
-    posix_spawn_file_actions_destroy(&actions);
-  }
+struct LongRender : Background {
+  explicit LongRender(const fs::path& video, const std::vector<std::string>& extra = {})
+      : Background(long_render_args(video, extra), video.parent_path() / "stderr.txt") {}
   /// Waits until the encoder has written into the temporary file; false if the run ended first.
   bool wait_until_writing(const fs::path& video) {
     const auto deadline = std::chrono::steady_clock::now() + 60s;
-    while (pid > 0 && std::chrono::steady_clock::now() < deadline) {
+    while (!ended() && std::chrono::steady_clock::now() < deadline) {
       const fs::path partial = partial_of(video);
       std::error_code ec;
       if (!partial.empty() && fs::file_size(partial, ec) > 0 && !ec) return true;
-      if (int status = 0; ::waitpid(pid, &status, WNOHANG) == pid) {
-        pid = -1;
-        return false;
-      }
       std::this_thread::sleep_for(10ms);
     }
     return false;
-  }
-  /// Sends `sig` (if given), waits for the exit, and returns the exit code as a shell gives it.
-  int finish(int sig = 0) {
-    if (pid <= 0) return -1;
-    if (sig != 0) ::kill(pid, sig);
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    pid = -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  }
-  std::string stderr_text() const { return read_file(log); }
-  ~LongRender() {
-    finish(SIGKILL);
-    std::error_code ec;
-    fs::remove(log, ec);
   }
 };
 
@@ -168,24 +140,9 @@ TEST(Interrupt, ASecondRenderToTheSameOutputIsRefusedWhileTheFirstWrites) {
   EXPECT_TRUE(leftovers(dir).empty()) << leftovers(dir).front();
 }
 
-/// A small tmpfs mounted at <scratch>/<name>/disk for the life of the object (root only).
-struct SmallDisk {
-  fs::path dir;
-  bool mounted = false;
-  SmallDisk(const std::string& name, const std::string& size)
-      : dir(fs::path(SYSTOLE_TEST_SCRATCH) / name / "disk") {
-    ::umount2(dir.c_str(), MNT_DETACH);  // Left mounted by a run that crashed, if any.
-    fs::create_directories(scratch(name) / "disk");
-    mounted = ::geteuid() == 0 && ::mount("tmpfs", dir.c_str(), "tmpfs", 0, ("size=" + size).c_str()) == 0;
-  }
-  ~SmallDisk() {
-    if (mounted) ::umount2(dir.c_str(), MNT_DETACH);
-  }
-};
-
 TEST(Interrupt, AFullDiskFailsTheRunAndLeavesTheEarlierVideoAndManifest) {
-  const SmallDisk disk("interrupt_full_disk", "1m");
-  if (!disk.mounted) GTEST_SKIP() << "cannot mount a small tmpfs here (needs root and mount rights): full disk not tested";
+  const SmallDisk disk(scratch("interrupt_full_disk") / "disk", "1m");
+  if (!disk.mounted) GTEST_SKIP() << kNoSmallDisk;
   const Earlier earlier(disk.dir / "clip.mp4");
   // Lossless frames fill the megabyte within a second of video.
   const RunResult r = run(systole() + " render " + source("scenes/heart.yaml") +

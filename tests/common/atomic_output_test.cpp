@@ -3,6 +3,7 @@
 // processes, and "died" is a real SIGKILL.
 
 #include "common/atomic_output.h"
+#include "common/interrupt.h"
 
 #include <signal.h>
 #include <sys/wait.h>

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <algorithm>
 #include <functional>
+#include <iterator>
+#include <map>
 
 #include "common/error.h"
 #include "encode_test_util.h"
@@ -199,6 +201,43 @@ TEST(Png, SequenceWriterCreatesTheFolderAndNumbersFrames) {
   test::write_bytes(root / "file", "x");
   EXPECT_EQ(code_of([&] { PngSequenceWriter w(root / "file", 3); }), ExitCode::kCannotCreate);
   EXPECT_EQ(code_of([&] { PngSequenceWriter w(root / "file" / "sub", 3); }), ExitCode::kCannotCreate);
+}
+
+/// Every file in `dir` with its bytes, by name.
+std::map<std::string, std::string> files_in(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::directory_iterator(dir)) files[entry.path().filename().string()] = test::read_bytes(entry.path());
+  return files;
+}
+
+TEST(Png, ASequenceReplacesItsFramesOnlyWhenFinishedAndLeavesTheOthers) {
+  const fs::path root = scratch_dir();
+  const fs::path dir = root / "frames";
+  {
+    PngSequenceWriter earlier(dir, 4);
+    for (int i = 0; i < 4; ++i) earlier.write(pattern(8, 6 + i), i);
+    earlier.finish();
+  }
+  test::write_bytes(dir / "notes.txt", "mine");
+  const auto before = files_in(dir);
+  {
+    PngSequenceWriter unfinished(dir, 4);  // An error or an interrupt: finish() is never called.
+    for (int i = 0; i < 4; ++i) unfinished.write(pattern(5, 5), i);
+    EXPECT_EQ(files_in(dir), before) << "nothing lands before finish()";
+  }
+  EXPECT_EQ(files_in(dir), before);
+  {
+    PngSequenceWriter selection(dir, 4);  // A --frames selection: frames 1 and 3.
+    selection.write(pattern(5, 5), 1);
+    selection.write(pattern(5, 5), 3);
+    selection.finish();
+  }
+  auto after = before;
+  for (int i : {1, 3}) after[frame_file_name(i, 4)] = test::read_bytes(dir / frame_file_name(i, 4));
+  EXPECT_EQ(files_in(dir), after) << "frames 0 and 2 and the note stay";
+  EXPECT_EQ(read_png(dir / frame_file_name(3, 4)).rgb, pattern(5, 5).rgb);
+  EXPECT_EQ(fs::directory_iterator(root)->path().filename(), "frames");
+  EXPECT_EQ(std::distance(fs::directory_iterator(root), fs::directory_iterator()), 1) << "no staging folder or lock is left";
 }
 
 }  // namespace

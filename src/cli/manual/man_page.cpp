@@ -125,7 +125,10 @@ void write_exit_status(std::ostream& page) {
        << exit_line(ExitCode::kIoError, "Reading or writing failed part-way.")
        << exit_line(ExitCode::kBusy, "Another run is writing the same output; try again later.")
        << exit_line(ExitCode::kDiverged, "The simulation diverged; the message names the frame, the cause and a remedy.")
-       << exit_line(ExitCode::kInterrupted, "Interrupted by SIGINT (SIGTERM gives 143); no output was written.");
+       << exit_line(ExitCode::kInterrupted,
+                    "Interrupted by SIGINT (SIGTERM gives 143): what was being written was not, and earlier outputs "
+                    "are untouched; the message names any output finished before the interrupt (one being put in "
+                    "place is let finish first).");
 }
 
 void write_environment(std::ostream& page) {
