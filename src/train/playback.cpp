@@ -4,6 +4,8 @@
 #include <limits>
 #include <numbers>
 
+#include "common/error.h"
+#include "scene/tree.h"
 #include "sim/from_scene.h"
 #include "sim/motion_error.h"
 #include "sim/solvers/step.h"
@@ -29,6 +31,16 @@ Problem make_problem(const scene::Scene& scene, std::size_t organ_index) {
   const scene::Organ& organ = alone.organs.front();
   Problem p{organ.name, std::move(body.model), source.world().dt_s, organ.target.rate_hz, 0, 0,
             load_target(organ, body.geometry), {}, {}, {}, 0, {}};
+  // The target moves the organ's surface vertices, and training ties particle i to target
+  // vertex i: a reduced body (a lattice) has other particles, so it is refused, not misread.
+  if (p.target.particle_count() != p.model.particle_count()) {
+    throw Error(ExitCode::kDataError,
+                scene::where(organ.origin) + "organ '" + organ.name + "': its target moves the " +
+                    std::to_string(p.target.particle_count()) + " vertices of its surface, and its body has " +
+                    std::to_string(p.model.particle_count()) +
+                    " particles (a reduced model, body.lattice); training ties each particle to its own target "
+                    "vertex, so give this organ body.lattice: 0 to tune it");
+  }
   const double steps_per_cycle = 1.0 / (p.rate_hz * p.dt_s);
   p.settle_steps = static_cast<int>(std::lround(organ.target.settle_cycles * steps_per_cycle));
   p.measure_steps = std::max(2, static_cast<int>(std::lround(organ.target.measure_cycles * steps_per_cycle)));
