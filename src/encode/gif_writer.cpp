@@ -131,8 +131,8 @@ void GifEncoder::allocate_frame() {
   frame->width = encoder->width;
   frame->height = encoder->height;
   if (av_frame_get_buffer(frame, 0) < 0) fail(ExitCode::kInternal, "out of memory for a frame");
-  // Padding beyond the picture is never written; zeroed, the encoder sees the same bytes on
-  // every run (encode/video_writer.cpp found an encoder reading it).
+  // Padding beyond the picture is never written; zeroed, no encoder can see what malloc
+  // left there (as in encode/video_writer.cpp's allocate_frame).
   for (AVBufferRef* buffer : frame->buf) {
     if (buffer != nullptr) std::memset(buffer->data, 0, buffer->size);
   }

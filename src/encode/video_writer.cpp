@@ -7,7 +7,13 @@
 #include <cstdint>
 #include <cstring>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <utility>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <cpuid.h>
+#endif
 
 #include "common/atomic_output.h"
 #include "common/error.h"
@@ -20,6 +26,7 @@ extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/channel_layout.h>
+#include <libavutil/cpu.h>
 #include <libavutil/dict.h>
 #include <libavutil/frame.h>
 #include <libavutil/opt.h>
@@ -102,6 +109,32 @@ void validate(const VideoSettings& s) {
   if (s.threads < 0 || s.threads > 64) {
     fail(ExitCode::kDataError, "threads " + std::to_string(s.threads) + " must be in 0..64 (0 = automatic)");
   }
+}
+
+/// The instruction sets x264 may use, as its `asm` option names them: what x264 itself
+/// detects, less AVX-512 (VideoWriter::Impl::encoder_options says why). Empty when the
+/// CPU has no AVX-512: x264's own detection then stands as it is.
+std::string x264_cpu_without_avx512() {
+  const int cpu = av_get_cpu_flags();  // AVX512 here means what x264 needs: F, CD, BW, DQ, VL and the OS's ZMM state.
+  if ((cpu & AV_CPU_FLAG_AVX512) == 0) return {};
+  bool lzcnt = false;  // x264 takes LZCNT from the extended leaf (ABM); libavutil has no flag for it.
+#if defined(__x86_64__) || defined(__i386__)
+  unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+  lzcnt = __get_cpuid(0x80000001, &eax, &ebx, &ecx, &edx) != 0 && (ecx & bit_ABM) != 0;
+#endif
+  const std::pair<int, const char*> features[] = {
+      {AV_CPU_FLAG_MMXEXT, "MMX2"}, {AV_CPU_FLAG_SSE, "SSE"},     {AV_CPU_FLAG_SSE2, "SSE2"},
+      {AV_CPU_FLAG_SSE3, "SSE3"},   {AV_CPU_FLAG_SSSE3, "SSSE3"}, {AV_CPU_FLAG_SSE4, "SSE4.1"},
+      {AV_CPU_FLAG_SSE42, "SSE4.2"}, {AV_CPU_FLAG_AVX, "AVX"},    {AV_CPU_FLAG_XOP, "XOP"},
+      {AV_CPU_FLAG_FMA4, "FMA4"},   {AV_CPU_FLAG_FMA3, "FMA3"},   {AV_CPU_FLAG_BMI1, "BMI1"},
+      {AV_CPU_FLAG_BMI2, "BMI2"},   {AV_CPU_FLAG_AVX2, "AVX2"}};
+  std::string names = lzcnt ? "LZCNT" : "";
+  for (const auto& [flag, name] : features) {
+    if ((cpu & flag) == 0) continue;
+    if (!names.empty()) names += ',';
+    names += name;
+  }
+  return names;
 }
 
 }  // namespace
@@ -285,6 +318,18 @@ AVDictionary* VideoWriter::Impl::encoder_options() {
       av_dict_set(&options, "preset", settings.preset.c_str(), 0);
       av_dict_set(&options, "profile", lossless ? "high444" : "high", 0);
       av_dict_set_int(&options, "crf", settings.crf, 0);
+      // Not x264's AVX-512 code: its macroblock-tree propagation (Debian 12's x264
+      // 0.164.3095, mbtree_propagate_list_internal_avx512) takes eight macroblocks at a time,
+      // so on a frame's last row it reads the costs and motion vectors of up to seven
+      // macroblocks past the end of its arrays - allocation padding x264 never writes - and
+      // adds what it finds there to the reference frames' costs, and so to their quantisers.
+      // The bytes then followed what the heap held before: the same frames encoded twice
+      // differed, rarely, on an AVX-512 machine (Formats.SameFramesGiveTheSameBytes), and
+      // always when the heap was filled first (tests/encode/heap_history_test.cpp). Its
+      // AVX2 code stays within the row; where the padding is zero both give the same bytes.
+      if (const std::string cpu = x264_cpu_without_avx512(); !cpu.empty()) {
+        av_dict_set(&options, "x264-params", ("asm=" + cpu).c_str(), 0);
+      }
       break;
     }
   }
@@ -301,9 +346,10 @@ void VideoWriter::Impl::allocate_frame() {
   frame->color_trc = encoder->color_trc;
   frame->colorspace = encoder->colorspace;
   if (av_frame_get_buffer(frame, 0) < 0) fail(ExitCode::kInternal, "out of memory for a frame");
-  // The planes' padding beyond the picture is never written by the conversion, and the
-  // encoder reads some of it: left as malloc gave it, two encodes of the same frames
-  // differed (Formats.SameFramesGiveTheSameBytes, in one checkout and not another).
+  // The planes' padding beyond the picture is never written by the conversion. Zeroed, so
+  // no encoder can see what malloc left there. (It was once taken for the cause of two
+  // encodes differing; with it left as malloc gave it, tests/encode/heap_history_test.cpp
+  // still passes. The cause was x264's AVX-512 code: see encoder_options.)
   for (AVBufferRef* buffer : frame->buf) {
     if (buffer != nullptr) std::memset(buffer->data, 0, buffer->size);
   }
