@@ -2,10 +2,6 @@
 // factor) at frame k; a loop's last frame flows into its first; captions appear only in
 // their time range and fade; title cards open the video. Small clips rendered in-process.
 
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,12 +9,12 @@
 
 #include "clip/render_clip.h"
 #include "clip/video_format.h"
-#include "common/atomic_output.h"
 #include "common/error.h"
 #include "encode/encode_test_util.h"
 #include "encode/png.h"
 #include "overlay/cards.h"
 #include "scene/load.h"
+#include "support/lock_held_elsewhere.h"
 #include "support/run.h"
 #include "support/small_heart_clip.h"
 
@@ -231,18 +227,8 @@ TEST(OutputFormat, AGifFasterThan50FpsIsRefusedBeforeAnyWork) {
 
 TEST(OutputFormat, ASecondRunOfOneOutputIsRefusedBeforeTheWorldIsBuilt) {
   const fs::path dir = scratch("claimed_first");
-  // Another process holds the video, as a first run would while it renders.
-  int ready[2];
-  ASSERT_EQ(::pipe(ready), 0);
-  const pid_t first = ::fork();
-  if (first == 0) {
-    const OutputLock held(dir / "clip.mp4");
-    const char byte = 1;
-    [[maybe_unused]] auto n = ::write(ready[1], &byte, 1);
-    for (;;) ::pause();
-  }
-  char byte = 0;
-  ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+  LockHeldElsewhere first(dir / "clip.mp4");  // As a first run would while it renders.
+  ASSERT_TRUE(first.held());
   const scene::Scene s = scene::load_from_string(small_heart_scene("duration: 0.2 s"), "teaching.yaml", {});
   clip::RenderRequest request;
   request.video = dir / "clip.mp4";
@@ -254,8 +240,7 @@ TEST(OutputFormat, ASecondRunOfOneOutputIsRefusedBeforeTheWorldIsBuilt) {
   } catch (const Error& e) {
     code = e.code();
   }
-  ::kill(first, SIGKILL);
-  ::waitpid(first, nullptr, 0);
+  first.release();
   EXPECT_EQ(code, ExitCode::kBusy);
   // Once the first run is gone, the same request fails on what it asks for.
   try {

@@ -4,16 +4,12 @@
 // in which nothing can move. Each ends with its exit code and says why, the refusals within
 // 2 s of CPU time and 300 MB (wait4's rusage).
 
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
 
-#include "common/atomic_output.h"
+#include "support/lock_held_elsewhere.h"
 #include "support/measure.h"
 #include "support/run.h"
 #include "support/small_heart_clip.h"
@@ -63,22 +59,13 @@ TEST(HostileRuns, AnOutputPathEndingInASlashAfterAVideoNameIsRefused) {
 TEST(HostileRuns, ASecondRunOfAVideoBeingWrittenIsRefusedBeforeItsSetUp) {
   const fs::path dir = scratch("hostile_busy");
   write_file(dir / "heart.yaml", small_heart_scene("duration: 0.2 s"));
-  int ready[2];
-  ASSERT_EQ(::pipe(ready), 0);
-  const pid_t first = ::fork();
-  if (first == 0) {  // The first run, holding the video as it would while it renders.
-    const OutputLock held(dir / "clip.mp4");
-    const char byte = 1;
-    [[maybe_unused]] auto n = ::write(ready[1], &byte, 1);
-    for (;;) ::pause();
-  }
-  char byte = 0;
-  ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+  LockHeldElsewhere first(dir / "clip.mp4");  // The first run, holding the video as it renders.
+  ASSERT_TRUE(first.held());
   const Measured m = measure({"render", (dir / "heart.yaml").string(), "-o", (dir / "clip.mp4").string()});
-  ::kill(first, SIGKILL);
-  ::waitpid(first, nullptr, 0);
+  const pid_t holder = first.pid();
+  first.release();
   EXPECT_EQ(m.exit_code, 75) << m.errors;
-  EXPECT_NE(m.errors.find("is being written by another run (pid " + std::to_string(first)), std::string::npos) << m.errors;
+  EXPECT_NE(m.errors.find("is being written by another run (pid " + std::to_string(holder)), std::string::npos) << m.errors;
   expect_bounded("a second run of one video", m);
 }
 
