@@ -15,6 +15,10 @@ Muxer::Muxer(const AtomicOutput& output, const char* name, std::string label) : 
 
 Muxer::~Muxer() {
   if (format_ == nullptr) return;
+  // A muxer that failed part-way (a full disk) still holds what it keeps between packets:
+  // FFmpeg 5.1's GIF muxer frees its held packet only in the trailer. Written into the
+  // temporary that is about to be removed; its error is the one already reported.
+  if (open_) av_write_trailer(format_);
   if (format_->pb != nullptr) avio_closep(&format_->pb);
   avformat_free_context(format_);
 }
@@ -28,6 +32,7 @@ void Muxer::write_header(const std::vector<std::pair<const char*, const char*>>&
   for (const auto& [key, value] : options) av_dict_set(&dictionary, key, value, 0);
   err = avformat_write_header(format_, &dictionary);
   av_dict_free(&dictionary);
+  open_ = err >= 0;
   if (err < 0) {
     throw Error(ExitCode::kIoError, label_ + " encoder: cannot write the header of '" + output_.target().string() +
                                         "': " + av_error_text(err));
@@ -46,6 +51,7 @@ void Muxer::write(AVPacket* packet, AVRational time_base, const AVStream* stream
 }
 
 void Muxer::finish() {
+  open_ = false;
   int err = av_write_trailer(format_);  // With MP4's +faststart this also moves moov to the front.
   if (err < 0) {
     throw Error(ExitCode::kIoError, label_ + " encoder: cannot finish '" + output_.target().string() + "': " + av_error_text(err));

@@ -47,6 +47,7 @@ class Muxer {
   const AtomicOutput& output_;
   std::string label_;
   AVFormatContext* format_ = nullptr;
+  bool open_ = false;  ///< The header is written and the trailer is not.
 };
 
 }  // namespace systole::encode::detail
