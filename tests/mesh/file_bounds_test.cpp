@@ -24,11 +24,13 @@ namespace fs = std::filesystem;
 using test::glb;
 using test::write_binary;
 
-/// The limits for one test, restored after it.
+/// The limits for one test, restored after it, and a folder of its own: ctest runs the
+/// tests of one fixture in parallel processes, and a shared folder is wiped by the next one.
 class FileBounds : public ::testing::Test {
  protected:
   void TearDown() override { import_limits() = ImportLimits{}; }
-  fs::path dir_ = test::scratch("file_bounds");
+  fs::path dir_ =
+      test::scratch(std::string("file_bounds/") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
 };
 
 /// The message import_mesh refuses `file` with (kDataError), or "" if it reads it.
