@@ -15,14 +15,16 @@ struct MotionArgs {
   double duration_s = 0;
   double band_mm = 1;
   int settle_beats = 1;
+  bool outside_view = false;
 };
 
 }  // namespace
 
 Command add_motion_command(CLI::App& app) {
   auto o = std::make_shared<MotionArgs>();
-  auto* cmd = app.add_subcommand("motion", "Check the simulated motion: every driven region repeats its beat, and no "
-                                           "part of a multi-part mesh passes through another. Exit 1 if not.");
+  auto* cmd = app.add_subcommand("motion", "Check the simulated motion: every driven region repeats its beat, no part "
+                                           "of a multi-part mesh passes through another, and a generated anatomy keeps "
+                                           "its linings inside its walls. Exit 1 if not.");
   cmd->add_option("scene", o->scene, "Scene file (YAML)")->required()->type_name(kSceneValue);
   add_define_option(*cmd, o->defines);
   cmd->add_option("--duration", o->duration_s, "Organ seconds to simulate (default: the scene's output.duration)")
@@ -33,11 +35,16 @@ Command add_motion_command(CLI::App& app) {
   cmd->add_option("--settle", o->settle_beats, "Beats left out as the body leaves its rest shape")
       ->check(CLI::Range(1, 20))
       ->capture_default_str();
+  cmd->add_flag("--outside-view", o->outside_view,
+                "Also draw the scene's views uncut, opaque and coloured by region at every frame, and count the "
+                "lining pixels of a generated anatomy they show");
   return {cmd, [o] {
             const auto scene = scene::load(o->scene, o->defines);
-            const study::MotionReport report = study::check_motion(scene, {o->duration_s, o->band_mm * 1e-3, o->settle_beats});
+            const study::MotionReport report =
+                study::check_motion(scene, {o->duration_s, o->band_mm * 1e-3, o->settle_beats, o->outside_view});
             std::cout << study::motion_text(report);
-            return report.periodic() && report.parts_kept() ? 0 : static_cast<int>(ExitCode::kDiffers);
+            return report.periodic() && report.parts_kept() && report.linings_inside() ? 0
+                                                                                        : static_cast<int>(ExitCode::kDiffers);
           }};
 }
 

@@ -1,7 +1,10 @@
 #include "mesh/anatomy.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
 #include <map>
+#include <set>
 
 namespace systole::mesh {
 namespace {
@@ -43,6 +46,43 @@ void find_rims(Cavity& cavity) {
     }
     cavity.rims.push_back(std::move(rim));
   }
+}
+
+namespace {
+
+/// A triangle as its corners in order, whichever corner it is listed from.
+std::array<int, 3> corners(const Eigen::Vector3i& t) {
+  std::array<int, 3> c{t[0], t[1], t[2]};
+  std::sort(c.begin(), c.end());
+  return c;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3i> epicardium(const Anatomy& anatomy) {
+  std::set<std::array<int, 3>> lining;
+  for (const Cavity& cavity : anatomy.cavities) {
+    for (const Eigen::Vector3i& t : cavity.lining) lining.insert(corners(t));
+  }
+  std::vector<Eigen::Vector3i> out;
+  for (const Eigen::Vector3i& t : anatomy.muscle) {
+    if (!lining.count(corners(t))) out.push_back(t);
+  }
+  return out;
+}
+
+std::vector<int> lining_vertices(const Anatomy& anatomy) {
+  std::set<int> outside;
+  for (const Eigen::Vector3i& t : epicardium(anatomy)) outside.insert({t[0], t[1], t[2]});
+  std::set<int> lining;
+  for (const Cavity& cavity : anatomy.cavities) {
+    for (const Eigen::Vector3i& t : cavity.lining) {
+      for (int k = 0; k < 3; ++k) {
+        if (!outside.count(t[k])) lining.insert(t[k]);
+      }
+    }
+  }
+  return {lining.begin(), lining.end()};
 }
 
 double cavity_volume(const Cavity& cavity, const std::vector<Eigen::Vector3d>& positions) {

@@ -98,6 +98,14 @@ struct Anatomy {
   }
 };
 
+/// The chamber walls' outside (the epicardium): the muscle's surface less the cavities'
+/// linings, facing out; closed where each wall is (a wall's outside is one closed surface).
+std::vector<Eigen::Vector3i> epicardium(const Anatomy& anatomy);
+
+/// The cavities' lining vertices that are not also corners of the epicardium, sorted: the
+/// vertices that must stay inside it (docs/anatomy.md, "The wall keeps its lining inside").
+std::vector<int> lining_vertices(const Anatomy& anatomy);
+
 /// Volume enclosed by a cavity's lining at `positions`, each rim closed by a fan about its
 /// centroid. unit: m^3
 double cavity_volume(const Cavity& cavity, const std::vector<Eigen::Vector3d>& positions);

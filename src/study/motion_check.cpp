@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <sstream>
 
 #include "common/error.h"
 #include "study/driven_regions.h"
+#include "study/lining_view.h"
+#include "study/lining_watch.h"
 #include "world/frame_source.h"
 #include "world/world.h"
 
@@ -64,13 +67,21 @@ bool MotionReport::parts_kept() const {
                      [](const OrganParts& o) { return o.worst.depth_m <= kCrossingTolerance_m; });
 }
 
+bool MotionReport::linings_inside() const {
+  return std::all_of(linings.begin(), linings.end(), [](const OrganLinings& l) { return l.worst_outside == 0; }) &&
+         view.worst_pixels == 0;
+}
+
 namespace {
 
-/// Refuses a check with nothing to check: too short for two beats after settling, and no parts.
+/// Refuses a check with nothing to check: too short for two beats after settling, and no
+/// parts or linings.
 void check_something_to_check(const MotionReport& report, const std::vector<DrivenRegion>& regions,
-                              const std::vector<PartCrossingWatch>& watches, const MotionOptions& options) {
+                              const std::vector<PartCrossingWatch>& watches, const std::vector<LiningWatch>& linings,
+                              const MotionOptions& options) {
   const bool any_parts =
-      std::any_of(watches.begin(), watches.end(), [](const PartCrossingWatch& w) { return w.parts().size() >= 2; });
+      std::any_of(watches.begin(), watches.end(), [](const PartCrossingWatch& w) { return w.parts().size() >= 2; }) ||
+      std::any_of(linings.begin(), linings.end(), [](const LiningWatch& l) { return !l.empty(); });
   double shortest_two_beats = HUGE_VAL;
   for (const auto& r : regions) shortest_two_beats = std::min(shortest_two_beats, (options.settle_beats + 2) / r.rate_hz);
   if (report.duration_s < shortest_two_beats && !any_parts) {
@@ -80,6 +91,52 @@ void check_something_to_check(const MotionReport& report, const std::vector<Driv
                                       std::to_string(options.settle_beats) +
                                       " left out) and no organ has parts; give a longer --duration");
   }
+}
+
+/// What the linings' watches and the outside view saw, into the report.
+void report_linings(const scene::Scene& scene, const std::vector<LiningWatch>& linings, const LiningView* view,
+                    MotionReport& report) {
+  for (std::size_t o = 0; o < linings.size(); ++o) {
+    const LiningWatch& l = linings[o];
+    if (l.empty()) continue;
+    report.linings.push_back({scene.organs[o].name, l.lining_vertices(), l.frames(), l.frames_outside(), l.worst_outside(),
+                              l.worst_frame(), l.worst_cavity()});
+  }
+  if (view && !view->empty()) {
+    report.view = {true, view->width(), view->height(), view->frames(), view->frames_with_pixels(), view->worst_pixels(),
+                   view->worst_frame()};
+  }
+}
+
+/// The linings' lines of the report: each organ's against its walls, the outside view's.
+std::string linings_text(const MotionReport& r) {
+  std::ostringstream out;
+  char line[512];
+  for (const auto& l : r.linings) {
+    std::snprintf(line, sizeof line, "  linings of %s (%d vertices) against its walls' outside, %d frames: ", l.organ.c_str(),
+                  l.lining_vertices, l.frames);
+    out << line;
+    if (l.worst_outside == 0) {
+      out << "none outside\n";
+    } else {
+      std::snprintf(line, sizeof line, "up to %d outside (frame %d, %s), in %d frames  LINING CROSSES THE WALL\n",
+                    l.worst_outside, l.worst_frame, l.worst_cavity.c_str(), l.frames_outside);
+      out << line;
+    }
+  }
+  if (r.view.drawn) {
+    std::snprintf(line, sizeof line, "  outside view (uncut, opaque, coloured by region, %dx%d), %d frames: ", r.view.width,
+                  r.view.height, r.view.frames);
+    out << line;
+    if (r.view.worst_pixels == 0) {
+      out << "no lining pixel\n";
+    } else {
+      std::snprintf(line, sizeof line, "up to %d lining pixels (frame %d), in %d frames  LINING SHOWS\n", r.view.worst_pixels,
+                    r.view.worst_frame, r.view.frames_with_pixels);
+      out << line;
+    }
+  }
+  return out.str();
 }
 
 }  // namespace
@@ -96,6 +153,7 @@ MotionReport check_motion(const scene::Scene& scene, const MotionOptions& option
 
   const std::vector<DrivenRegion> regions = driven_regions(scene, world);
   std::vector<PartCrossingWatch> watches;
+  std::vector<LiningWatch> linings;
   for (std::size_t o = 0; o < world.organs.size(); ++o) {
     const auto& body = world.organs[o];
     report.bodies.push_back(scene.organs[o].name + ": " +
@@ -105,19 +163,25 @@ MotionReport check_motion(const scene::Scene& scene, const MotionOptions& option
     if (anatomy) report.anatomies.push_back(scene.organs[o].name);
     // An empty mesh stands in for an anatomy's: nothing to watch (MotionReport::anatomies).
     watches.emplace_back(anatomy ? mesh::OrganMesh{} : body.geometry.mesh, options.band_m);
+    linings.emplace_back(body.geometry.mesh);
   }
-  check_something_to_check(report, regions, watches, options);
+  std::unique_ptr<LiningView> view;
+  if (options.outside_view) view = std::make_unique<LiningView>(scene, world);
+  check_something_to_check(report, regions, watches, linings, options);
 
   // The check listens to every frame of the run: the parts' crossings, the regions' beats.
   std::vector<std::vector<double>> signals(regions.size());
-  Eigen::Matrix3Xd positions, stacked;
+  std::vector<Eigen::Matrix3Xd> positions(world.organs.size());
+  Eigen::Matrix3Xd stacked;
   double t0_s = 0;  // Organ time of clip frame 0 (after a loop's settling frames).
   source.on_frame([&](int f) {
     if (f == 0 && !world.organs.empty()) t0_s = world.organs[0].state.time_s;
-    for (std::size_t o = 0; f > 0 && o < world.organs.size(); ++o) {
-      source.positions(static_cast<int>(o), positions);
-      watches[o].check(positions, f);
+    for (std::size_t o = 0; o < world.organs.size(); ++o) {
+      source.positions(static_cast<int>(o), positions[o]);
+      if (f > 0) watches[o].check(positions[o], f);
+      if (f < report.frames) linings[o].check(positions[o], f);  // The clip's frames.
     }
+    if (view && f < report.frames) view->lining_pixels(positions, f);
     source.stacked_positions(stacked);
     for (std::size_t r = 0; r < regions.size(); ++r) signals[r].push_back(radial_excursion_m(regions[r], stacked));
   });
@@ -130,6 +194,7 @@ MotionReport check_motion(const scene::Scene& scene, const MotionOptions& option
     if (watches[o].parts().size() < 2) continue;
     report.organs.push_back({scene.organs[o].name, watches[o].parts(), watches[o].pairs_compared(), watches[o].worst()});
   }
+  report_linings(scene, linings, view.get(), report);
   return report;
 }
 
@@ -165,14 +230,16 @@ std::string motion_text(const MotionReport& r) {
     }
   }
   for (const auto& a : r.anatomies) {
-    out << "  parts of " << a << ": a generated anatomy, its parts labels on one welded wall (not checked)\n";
+    out << "  parts of " << a << ": a generated anatomy, its parts labels on one welded wall (its linings are checked instead)\n";
   }
+  out << linings_text(r);
   std::snprintf(line, sizeof line, "periodic (every beat within %.0f %% of the one before): %s\n", kBeatToBeatTolerancePct,
                 r.regions.empty() ? "no periodic region" : r.periodic() ? "yes" : "no");
   out << line;
   std::snprintf(line, sizeof line, "parts kept apart (no crossing beyond %.1f mm): %s\n", kCrossingTolerance_m * 1e3,
                 r.organs.empty() ? "no multi-part organ" : r.parts_kept() ? "yes" : "no");
   out << line;
+  if (!r.linings.empty()) out << "linings inside their walls: " << (r.linings_inside() ? "yes" : "no") << "\n";
   return out.str();
 }
 

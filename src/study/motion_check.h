@@ -1,8 +1,10 @@
 #pragma once
 // `systole motion`: is the organ's motion what a beating organ's is? It runs the scene and
-// checks two things a viewer would see go wrong with a mesh the body does not suit: every
+// checks what a viewer would see go wrong with a mesh the body does not suit: every
 // periodically driven region repeats its beat (a body that slowly crumples or drifts does
-// not), and no part of a multi-part surface passes through another (study/part_crossing.h).
+// not), no part of a multi-part surface passes through another (study/part_crossing.h), and
+// a generated anatomy keeps its linings inside its walls (study/lining_watch.h; with
+// MotionOptions::outside_view, also as an outside view sees them, study/lining_view.h).
 
 #include <string>
 #include <vector>
@@ -24,6 +26,9 @@ struct MotionOptions {
   /// Beats left out as the body leaves its rest shape: one for most bodies; a lightly damped
   /// one (the anatomical heart, 1 ms) still rings out of it through the second.
   int settle_beats = 1;
+  /// Also draw the scene's views uncut, opaque and coloured by region at every frame, and
+  /// count the lining pixels they show (study/lining_view.h).
+  bool outside_view = false;
 };
 
 /// One periodically driven region's beats, compared each with the one before; the first
@@ -44,6 +49,27 @@ struct OrganParts {
   PartCrossingWatch::Crossing worst;
 };
 
+/// A generated anatomy's linings against its walls' outside, frame by frame.
+struct OrganLinings {
+  std::string organ;
+  int lining_vertices = 0;  ///< Watched (mesh::lining_vertices).
+  int frames = 0;
+  int frames_outside = 0;   ///< Frames with a lining vertex outside the epicardium.
+  int worst_outside = 0;    ///< The most lining vertices outside in one frame.
+  int worst_frame = -1;
+  std::string worst_cavity; ///< The cavity a vertex outside at the worst frame lines.
+};
+
+/// The lining pixels of the outside view (MotionOptions::outside_view), frame by frame.
+struct OutsideView {
+  bool drawn = false;
+  int width = 0, height = 0;  ///< unit: px
+  int frames = 0;
+  int frames_with_pixels = 0;
+  int worst_pixels = 0;       ///< The most lining pixels in one frame.
+  int worst_frame = -1;
+};
+
 struct MotionReport {
   std::string scene;
   double duration_s = 0;      ///< unit: s
@@ -55,11 +81,16 @@ struct MotionReport {
   std::vector<OrganParts> organs;
   /// Organs whose parts are not checked: a generated anatomy's parts are labels on one
   /// welded wall (a septum is part of both ventricles' walls), not surfaces that could pass
-  /// through each other; its moving valve leaflets sit on the walls they hinge from.
+  /// through each other; its moving valve leaflets sit on the walls they hinge from. Its
+  /// linings are checked instead (`linings`).
   std::vector<std::string> anatomies;
+  std::vector<OrganLinings> linings;
+  OutsideView view;
 
   bool periodic() const;      ///< Every region repeats its beat within the tolerance.
   bool parts_kept() const;    ///< No part passed through another beyond the tolerance.
+  /// No lining vertex left its wall's outside, and the outside view (if drawn) showed no lining.
+  bool linings_inside() const;
 };
 
 /// Runs the scene for the duration, frame by frame. Throws Error(kDiverged) when the body

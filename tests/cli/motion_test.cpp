@@ -1,8 +1,9 @@
 // ctest-labels: slow-under-sanitizers
 // `systole motion` on the shipped heart (beats that repeat once it has rung out of its rest
-// shape: exit 0), on the same heart struck once mid-run (a beat that differs: exit 1, naming
-// the region and the beat), and on the shipped multi-part heart: its parts stay apart in
-// the lattice it gets, and pass through each other on the full model.
+// shape, linings inside its walls: exit 0, and no lining in an outside view), on the same
+// heart struck once mid-run (a beat that differs: exit 1, naming the region and the beat),
+// and on the shipped multi-part heart: its parts stay apart in the lattice it gets, and pass
+// through each other on the full model.
 
 #include <gtest/gtest.h>
 
@@ -25,6 +26,17 @@ TEST(Motion, TheShippedHeartRepeatsItsBeat) {
   EXPECT_NE(r.output.find("first 3 left out"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("periodic (every beat within 2 % of the one before): yes"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("parts of heart: a generated anatomy"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("linings of heart (1844 vertices) against its walls' outside, 156 frames: none outside"),
+            std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("linings inside their walls: yes"), std::string::npos) << r.output;
+}
+
+TEST(Motion, AnOutsideViewOfTheShippedHeartShowsNoLining) {
+  const auto r = run(systole() + " motion " + source("scenes/heart.yaml") +
+                     " --duration 0.5 --outside-view -D output.width=320 -D output.height=180");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("outside view (uncut, opaque, coloured by region, 320x180), 15 frames: no lining pixel"),
+            std::string::npos) << r.output;
 }
 
 TEST(Motion, ABeatDisturbedByAPushIsNotPeriodic) {

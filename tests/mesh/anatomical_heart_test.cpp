@@ -11,6 +11,7 @@
 
 #include "mesh/anatomy.h"
 #include "mesh/procedural.h"
+#include "mesh/winding.h"
 
 namespace systole::mesh {
 namespace {
@@ -92,6 +93,34 @@ TEST(CavityVolume, CapsOpenRimsWhateverTheirSize) {
   EXPECT_NEAR(cavity_volume(c, x), 1.0, 1e-12);
   x[4].z() = x[5].z() = x[6].z() = x[7].z() = 3;  // Taller: the cap moves with its rim.
   EXPECT_NEAR(cavity_volume(c, x), 3.0, 1e-12);
+}
+
+// Each wall's outside is one closed surface, and every lining vertex lies inside the walls'
+// outside at rest, at every detail: the right ventricle's crescent once ended at the ray
+// from its axis tangent to the left wall's outside, in a cliff with no wall between lining
+// and outside (docs/anatomy.md, "The wall keeps its lining inside").
+TEST(AnatomicalHeart, EveryLiningLiesInsideTheEpicardiumAtRest) {
+  for (int detail = 1; detail <= 6; ++detail) {
+    const OrganMesh m = detail == 3 ? heart() : generate_organ("anatomical_heart", detail);
+    const std::vector<Eigen::Vector3i> outside = epicardium(m.anatomy);
+    std::map<std::pair<int, int>, int> edges;
+    for (const auto& t : outside) {
+      for (int k = 0; k < 3; ++k) ++edges[{t[k], t[(k + 1) % 3]}];
+    }
+    for (const auto& [edge, count] : edges) {
+      ASSERT_EQ(count, 1) << "detail " << detail;
+      ASSERT_EQ(edges.count({edge.second, edge.first}), 1u) << "detail " << detail;
+    }
+    const std::vector<int> lining = lining_vertices(m.anatomy);
+    ASSERT_GT(lining.size(), 100u);
+    Eigen::Matrix3Xd x(3, static_cast<Eigen::Index>(m.surface.positions.size())), points(3, static_cast<Eigen::Index>(lining.size()));
+    for (std::size_t v = 0; v < m.surface.positions.size(); ++v) x.col(static_cast<Eigen::Index>(v)) = m.surface.positions[v];
+    for (std::size_t i = 0; i < lining.size(); ++i) points.col(static_cast<Eigen::Index>(i)) = x.col(lining[i]);
+    const std::vector<int> winding = winding_numbers(x, outside, points);
+    for (std::size_t i = 0; i < lining.size(); ++i) {
+      EXPECT_GE(winding[i], 1) << "detail " << detail << ": lining vertex " << lining[i] << " outside the epicardium";
+    }
+  }
 }
 
 TEST(AnatomicalHeart, FibresOnlyInTheMuscleAndPerpendicularToTheWall) {

@@ -57,7 +57,10 @@ constexpr double kRightOffset = 42 * mm;     // Between the two walls' axes.
 constexpr double kRightLower = 6 * mm;       // The tricuspid annulus lies lower than the mitral.
 constexpr double kSeptumOverlap = 1.5 * mm;  // The right wall reaches into the left's.
 constexpr double kRightLean = 10 * mm;       // The right ventricle's apex towards the left's axis.
-constexpr double kRightWiden = 1.3;          // Its radii below the annulus, against the meridian's.
+constexpr double kRightWiden = 1.4;          // Its radii below the annulus, against the meridian's.
+constexpr double kWidenOver = 0.16;          // The share of the meridian it widens over, from just above the annulus.
+constexpr double kGrooveRise = 60 * mm;      // Per radian: how steeply the free wall rises out of the grooves.
+constexpr double kGrooveSoft = 6 * mm;       // How round the free wall turns into a groove.
 
 std::vector<double> in_metres(const std::vector<double>& millimetres) {
   std::vector<double> m;
@@ -66,6 +69,12 @@ std::vector<double> in_metres(const std::vector<double>& millimetres) {
 }
 
 double angle_between(double a, double b) { return std::abs(std::remainder(a - b, 2 * kPi)); }
+
+// The smaller of a and b, rounded over `soft` where they are close (a log-sum-exp). unit: as a, b
+double smooth_min(double a, double b, double soft) {
+  const double low = std::min(a, b);
+  return low - soft * std::log1p(std::exp(-std::abs(a - b) / soft));
+}
 
 // The angle around a wall's axis at which its radial direction is nearest to `direction`.
 double around_towards(const WallShape& w, const Vec& direction) {
@@ -121,6 +130,17 @@ struct RightMeetsLeft {
   static double lean(double along) {
     return along >= kAnnulusAlong ? 0.0 : kRightLean * std::pow(1 - along / kAnnulusAlong, 2);
   }
+  // A ray from the right wall's axis in the plane at `along`'s height, against the left
+  // wall's outside there: how far along it the left axis lies, how far from it it passes. unit: m
+  struct Ray {
+    double left_radius, towards, passing;
+  };
+  Ray ray(double around, double along) const {
+    const double offset = kRightOffset - lean(along);  // Between the two axes here.
+    const double towards = offset * (std::cos(around) * e1 + std::sin(around) * e2).dot(e1);
+    return {left->outside_radius_at(height_at(along) + kRightLower, 0), towards,
+            std::sqrt(std::max(0.0, offset * offset - towards * towards))};
+  }
   double height_at(double along) const {  // Linear is close enough to decide the contact.
     const double u = along * (heights.size() - 1);
     const int i = std::min(static_cast<int>(u), static_cast<int>(heights.size()) - 2);
@@ -130,15 +150,36 @@ struct RightMeetsLeft {
   // this height: the right wall stops there (overlapping a little), so the septum is one
   // wall and the right ventricle a crescent round the left. 0: no contact.
   double contact(double around, double along) const {
-    const double left_radius = left->outside_radius_at(height_at(along) + kRightLower, 0);
-    if (left_radius <= 0) return 0.0;
-    const double offset = kRightOffset - lean(along);  // Between the two axes here.
-    const Vec ray = std::cos(around) * e1 + std::sin(around) * e2;
-    const double c_dot_u = offset * ray.dot(-e1);  // Right axis minus left axis, along the ray.
-    const double disc = c_dot_u * c_dot_u - offset * offset + left_radius * left_radius;
-    if (disc < 0) return 0.0;
-    const double r = -c_dot_u - std::sqrt(disc);
-    return r > 0 ? r : 0.0;
+    const Ray r = ray(around, along);
+    const double disc = r.left_radius * r.left_radius - r.passing * r.passing;
+    if (r.left_radius <= 0 || r.towards <= 0 || disc < 0) return 0.0;
+    return std::max(0.0, r.towards - std::sqrt(disc));
+  }
+  // How far the right wall may reach along the ray, against the ray's angle from the left
+  // axis' direction: the contact while it rises no faster than kGrooveRise, then rising at
+  // that rate, past the tangent ray and beside the left wall, so the free wall closes on the
+  // left's in a groove. The contact alone rises ever faster towards the tangent ray and stops
+  // there: a cliff (12 -> 20 mm in front, 12 -> 40 mm behind, half way down) that no ring of
+  // vertices resolves, its wall with no thickness between lining and outside, the seam along
+  // the interventricular grooves. 0: no limit.
+  double reach(double around, double along) const {
+    const Ray r = ray(around, along);
+    const double offset = std::hypot(r.towards, r.passing);
+    if (r.left_radius <= 0 || offset <= r.left_radius) return 0.0;
+    // The contact at angle a from the left axis' direction, and its rise there. unit: m, m/rad
+    auto meet = [&](double a) {
+      return offset * std::cos(a) - std::sqrt(std::max(0.0, r.left_radius * r.left_radius - std::pow(offset * std::sin(a), 2)));
+    };
+    auto rise = [&](double a) {
+      const double chord = std::sqrt(std::max(1e-18, r.left_radius * r.left_radius - std::pow(offset * std::sin(a), 2)));
+      return -offset * std::sin(a) + offset * offset * std::sin(a) * std::cos(a) / chord;
+    };
+    const double tangent = std::asin(r.left_radius / offset);
+    double lo = 0, hi = tangent;  // The rise grows from 0 straight ahead to no bound at the tangent.
+    for (int i = 0; i < 50; ++i) (rise(0.5 * (lo + hi)) < kGrooveRise ? lo : hi) = 0.5 * (lo + hi);
+    const double angle = std::atan2(r.passing, r.towards);
+    if (angle <= lo) return std::max(0.0, meet(angle));
+    return meet(lo) + kGrooveRise * (angle - lo);
   }
   double appendage(double around, double along) const {
     return std::exp(-std::pow(angle_between(around, appendage_around) / 0.4, 2) - std::pow((along - 0.70) / 0.07, 2));
@@ -249,8 +290,11 @@ std::function<double(double, double, double, double)> Heart::right_radius(const 
   const double below_from_origin = below.dot(origin) + 44 * mm;
   const Vec axis = layout_.axis;
   return [=](double around, double along, double radius, double thickness) {
-    // The ventricle only (the atrium keeps its size), blended over the annulus.
-    radius *= 1 + (kRightWiden - 1) * std::clamp((kAnnulusAlong + 0.04 - along) / 0.08, 0.0, 1.0);
+    // The ventricle only (the atrium keeps its size), blended in below the annulus: blended
+    // over 0.08 of the meridian, the widening made a ledge under the tricuspid annulus whose
+    // outside folded as the ventricle contracted, and the lining showed there. 1.4 (was 1.3)
+    // keeps the cavity's 94 ml that the grooves now take from it.
+    radius *= 1 + (kRightWiden - 1) * std::clamp((kAnnulusAlong + 0.04 - along) / kWidenOver, 0.0, 1.0);
     double r = radius + 9 * mm * g.appendage(around, along);
     if (along <= kAnnulusAlong + 0.05) {
       const Vec ray = std::cos(around) * g.e1 + std::sin(around) * g.e2;
@@ -261,14 +305,14 @@ std::function<double(double, double, double, double)> Heart::right_radius(const 
         const double towards = n.dot(ray);
         if (towards <= 1e-3) continue;
         const double most = (d - n.dot(centre)) / towards - thickness;  // The outside on the plane.
-        limit = -soft * std::log(std::exp(-limit / soft) + std::exp(-most / soft));
+        limit = smooth_min(limit, most, soft);
       }
       r = std::max(limit, 0.25 * radius);
     }
     // Near its apex the leaning wall nearly touches the left's: it may thin to a slit there,
     // but never reach through the septum into the left cavity.
-    if (const double meet = g.contact(around, along); meet > 0) {
-      r = std::max(0.05 * radius, std::min(r, meet + kSeptumOverlap - thickness));
+    if (const double reach = g.reach(around, along); reach > 0) {
+      r = std::max(0.05 * radius, smooth_min(r, reach + kSeptumOverlap - thickness, kGrooveSoft));
     }
     return r;
   };

@@ -98,8 +98,8 @@ class Wall {
   double key_value(const std::vector<double>& keys, double along, bool odd) const;
   double key_slope(const std::vector<double>& keys, double along, bool odd) const;
   void meridian(double along, double& height, double& radius, double& thickness, Eigen::Vector2d& normal) const;
-  /// The outward normal at (around, along) from the meridian's 2-D normal, turned by the
-  /// shift's slope where the axis bends.
+  /// The outward normal at (around, along): the meridian's 2-D `normal` for a wall of
+  /// revolution; where the axis bends or the lining's radius is shaped, the lining's own.
   Vec outward(double around, double along, const Eigen::Vector2d& normal) const;
   int node(int layer, int row, int column) const;  ///< row 0 and rows_ are the poles (closed walls).
   // The constructor's steps, in order: lattice nodes, cells, drawn vertices, triangles.
