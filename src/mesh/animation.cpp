@@ -199,6 +199,60 @@ std::vector<std::size_t> match_vertices(const std::filesystem::path& file, const
 
 }  // namespace
 
+namespace {
+
+/// The file's scene read for its animation, checked: no post-processing that moves or merges
+/// vertices (the file's own vertices are what the animation moves).
+const aiScene* read_animated(Assimp::Importer& importer, const std::filesystem::path& file) {
+  check_mesh_file(file);
+  const aiScene* scene = read_with_assimp(importer, file, aiProcess_ValidateDataStructure);
+  if (scene->mNumAnimations == 0) throw Error(ExitCode::kDataError, file.string() + ": the file holds no animation");
+  if (!(scene->mAnimations[0]->mDuration > 0)) throw Error(ExitCode::kDataError, file.string() + ": the animation has no duration");
+  return scene;
+}
+
+}  // namespace
+
+AnimatedSurface read_animated_file(const std::filesystem::path& file, int samples, int cycles) {
+  Assimp::Importer importer;
+  const aiScene* scene = read_animated(importer, file);
+  const aiAnimation* animation = scene->mAnimations[0];
+  const double ticks_per_s = animation->mTicksPerSecond > 0 ? animation->mTicksPerSecond : 1.0;
+  AnimatedSurface out;
+  out.file = file.string();
+  out.rest = pose(scene, nullptr, 0);
+  out.duration = animation->mDuration / ticks_per_s;
+  // Triangles and parts, mesh by mesh in the order pose() lists their vertices.
+  unsigned base = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[m];
+    const aiNode* node = node_of_mesh(scene->mRootNode, m);
+    std::string name = mesh->mName.length > 0 ? mesh->mName.C_Str() : (node != nullptr ? node->mName.C_Str() : "");
+    int part = -1;
+    if (!name.empty()) {
+      const auto it = std::find(out.parts.begin(), out.parts.end(), name);
+      part = static_cast<int>(it - out.parts.begin());
+      if (it == out.parts.end()) out.parts.push_back(name);
+    }
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      for (unsigned k = 1; k + 1 < face.mNumIndices; ++k) {  // Polygons as fans.
+        out.triangles.emplace_back(base + face.mIndices[0], base + face.mIndices[k], base + face.mIndices[k + 1]);
+      }
+    }
+    out.vertex_part.insert(out.vertex_part.end(), mesh->mNumVertices, part);
+    base += mesh->mNumVertices;
+  }
+  if (out.parts.empty()) out.vertex_part.clear();
+  const double span = out.duration / std::max(1, cycles), start = out.duration - span;
+  for (int i = 0; i < samples; ++i) {
+    const double t = start + span * double(i) / double(samples);
+    out.times.push_back(t);
+    out.poses.push_back(pose(scene, animation, t * ticks_per_s));
+  }
+  return out;
+}
+
 AnimationPoses import_animation(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& rest_vertices,
                                 int samples) {
   check_mesh_file(file);

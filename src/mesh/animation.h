@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "mesh/animated_surface.h"
+
 namespace systole::mesh {
 
 struct AnimationPoses {
@@ -27,5 +29,12 @@ struct AnimationPoses {
 /// no animation or a rest vertex has no counterpart in it.
 AnimationPoses import_animation(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& rest_vertices,
                                 int samples);
+
+/// The first animation of `file` as a surface of its own (mesh/animated_surface.h): its
+/// vertices as the file holds them (no welding: the animation moves them one by one, node
+/// transforms applied), its triangles, each mesh a part (named as import_mesh names it), and
+/// `samples` poses evenly spaced over the animation's last 1 / `cycles` (the whole of it for
+/// 1; for a clip of many beats, its last, most settled one). Throws as import_animation does.
+AnimatedSurface read_animated_file(const std::filesystem::path& file, int samples, int cycles);
 
 }  // namespace systole::mesh

@@ -158,6 +158,7 @@ struct Target {
   std::vector<TargetCurve> curves;     ///< ...or per-region size curves...
   std::string animation;               ///< ...or an animated mesh file (morph targets, skinning); resolved by load().
   int animation_samples = 32;          ///< Poses sampled from the animation over one period.
+  int cycles = 1;                      ///< Periods the animation holds; its last one is the target.
   double coupling_N_per_m = 5000;      ///< Stiffness tying each particle to its target while recording. unit: N/m
   int harmonics = 3;                   ///< Fourier harmonics of a fitted drive.
   std::vector<std::string> lock;       ///< Parameters kept as written: `param`, `region` or `region.param`.

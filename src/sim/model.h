@@ -69,15 +69,21 @@ struct Grab {
   double compliance_m_per_N = 0;           ///< unit: m/N
 };
 
-/// Zero-length attachments of every free particle to a moving target position: how
+struct Embedding;  // sim/reduced.h
+
+/// Zero-length attachments of every free particle (or embedded surface point) to a moving target position: how
 /// training couples the body to key-frame motion (train/). Each is three XPBD
 /// constraints C = x_i - target_i(t) (Macklin et al. 2016, eq. 18, target inverse mass 0),
 /// so State::attachment_lambda / h^2 is the force the coupling exerts. XPBD only. Not part
 /// of the Model: whoever couples a body passes it to sim::step beside the model.
 struct Attachments {
-  /// Writes every particle's target at time t into `out` (3 x particles); empty: none. unit: m
+  /// Writes every attached point's target at time t into `out` (3 x points); empty: none. unit: m
   std::function<void(double t_s, Eigen::Matrix3Xd& out)> target;
   double compliance_m_per_N = 0;  ///< unit: m/N
+  /// The attached points: the render surface embedded in the body (a lattice's or a
+  /// myocardium's), each C = sum_k w_k x_k + offset - target, which moves its cell's corners
+  /// by their weights as contact does; null or empty: every particle itself.
+  const Embedding* points = nullptr;
 
   bool enabled() const { return static_cast<bool>(target); }
 };

@@ -3,9 +3,87 @@
 #include <Eigen/Dense>
 
 #include "sim/forces.h"
+#include "sim/solvers/step.h"
 #include "world/frame_source.h"
 
 namespace systole::train {
+namespace {
+
+/// Normal equations of a few columns solved with a small ridge (relative to the largest
+/// diagonal): a region the data cannot see stays at 0 change.
+Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& rhs, double ridge) {
+  Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
+  normal.diagonal().array() += ridge * (normal.diagonal().maxCoeff() + 1e-30);
+  return normal.ldlt().solve(jacobian.transpose() * rhs);
+}
+
+/// The change of each fitted region's contraction that lets the springs exert the
+/// attachments' force (header).
+Eigen::VectorXd from_forces(const sim::Model& model, const sim::State& state, double h, const std::vector<int>& column_of,
+                            int columns) {
+  const sim::Springs& sp = model.springs;
+  const int n = model.particle_count();
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(3 * n, columns);
+  for (int j = 0; j < sp.size(); ++j) {
+    const int a = sp.a[j], b = sp.b[j];
+    const Eigen::Vector3d d = state.x.col(b) - state.x.col(a);
+    const double len = d.norm();
+    if (len < 1e-12) continue;
+    // The spring's force as one XPBD iteration exerts it, lambda / h^2 = -C / (h^2 w + alpha)
+    // (XPBD eq. 18; the damper is a separate velocity pass): below the stiffness 1 / alpha
+    // when the particles are light.
+    const double k = 1.0 / (h * h * (model.inverse_mass[a] + model.inverse_mass[b]) + sp.compliance_m_per_N[j]);
+    const Eigen::Vector3d gradient = (k * sp.rest_m[j] / len) * d;  // k L0 n
+    for (int end : {sp.region_a[j], sp.region_b[j]}) {
+      const int c = end >= 0 ? column_of[end] : -1;
+      if (c < 0) continue;
+      // Contracting the spring pulls b towards a and a towards b (half per end region).
+      if (model.inverse_mass[b] > 0) jacobian.block<3, 1>(3 * b, c) -= 0.5 * gradient;
+      if (model.inverse_mass[a] > 0) jacobian.block<3, 1>(3 * a, c) += 0.5 * gradient;
+    }
+  }
+  const Eigen::Matrix3Xd force = state.attachment_lambda / (h * h);
+  return ridge_solve(jacobian, Eigen::Map<const Eigen::VectorXd>(force.data(), 3 * n), 1e-9);
+}
+
+/// The contractions whose driven rest lengths best match the springs' lengths now (header):
+/// two Gauss-Newton steps from the current contractions, derivatives by central differences
+/// of sim::driven_rest_length (fibres make it nonlinear in c).
+Eigen::VectorXd from_lengths(const sim::Model& model, const sim::State& state, const std::vector<int>& fitted,
+                             const std::vector<int>& column_of) {
+  const sim::Springs& sp = model.springs;
+  const int columns = static_cast<int>(fitted.size());
+  std::vector<int> rows;  // The springs a fitted region drives.
+  for (int j = 0; j < sp.size(); ++j) {
+    const bool a = sp.region_a[j] >= 0 && column_of[sp.region_a[j]] >= 0;
+    const bool b = sp.region_b[j] >= 0 && column_of[sp.region_b[j]] >= 0;
+    if ((a || b) && sp.rest_m[j] > 0) rows.push_back(j);
+  }
+  Eigen::VectorXd contraction = state.region_contraction;
+  Eigen::MatrixXd jacobian(static_cast<Eigen::Index>(rows.size()), columns);
+  Eigen::VectorXd residual(static_cast<Eigen::Index>(rows.size()));
+  constexpr double kDelta = 1e-4;
+  for (int iteration = 0; iteration < 2; ++iteration) {
+    jacobian.setZero();
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const int j = rows[i];
+      const double length = (state.x.col(sp.b[j]) - state.x.col(sp.a[j])).norm();
+      residual[static_cast<Eigen::Index>(i)] = (length - sim::driven_rest_length(sp, j, contraction)) / sp.rest_m[j];
+      for (int end : {sp.region_a[j], sp.region_b[j]}) {
+        if (end < 0 || column_of[end] < 0 || jacobian(static_cast<Eigen::Index>(i), column_of[end]) != 0) continue;
+        Eigen::VectorXd up = contraction, down = contraction;
+        up[end] += kDelta, down[end] -= kDelta;
+        jacobian(static_cast<Eigen::Index>(i), column_of[end]) =
+            (sim::driven_rest_length(sp, j, up) - sim::driven_rest_length(sp, j, down)) / (2 * kDelta * sp.rest_m[j]);
+      }
+    }
+    const Eigen::VectorXd step = ridge_solve(jacobian, residual, 1e-6);
+    for (int c = 0; c < columns; ++c) contraction[fitted[c]] += step[c];
+  }
+  return contraction;
+}
+
+}  // namespace
 
 RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, double coupling_N_per_m,
                                const std::vector<int>& fitted) {
@@ -15,9 +93,11 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
   sim::Attachments coupling;
   coupling.target = [&target, rate](double t_s, Eigen::Matrix3Xd& out) { target.positions(rate * t_s, out); };
   coupling.compliance_m_per_N = 1.0 / coupling_N_per_m;
+  if (!problem.embedding.empty()) coupling.points = &problem.embedding;
 
   RecordedSignals rec;
   rec.contraction.assign(model.regions.size(), {});
+  rec.length_contraction.assign(model.regions.size(), {});
   // The coupled body played alone; the recorder listens after every measured step.
   world::BodyPlayback playback(model, problem.dt_s, &coupling);
   const sim::State& state = playback.state();
@@ -25,45 +105,23 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
   std::vector<int> column_of(model.regions.size(), -1);
   for (int c = 0; c < columns; ++c) column_of[fitted[c]] = c;
   const double h = problem.dt_s / model.substeps;
-  const sim::Springs& sp = model.springs;
-  Eigen::MatrixXd jacobian(3 * n, columns);
   double force_sum = 0;
+  ErrorMeter floor(problem);
   playback.run(problem.settle_steps);
-  playback.run(problem.measure_steps, [&](int) {
-    // Force of the attachments on each particle in the last substep (pinned ones have none).
-    const Eigen::Matrix3Xd force = state.attachment_lambda / (h * h);
-    jacobian.setZero();
-    for (int j = 0; j < sp.size(); ++j) {
-      const int a = sp.a[j], b = sp.b[j];
-      const Eigen::Vector3d d = state.x.col(b) - state.x.col(a);
-      const double len = d.norm();
-      if (len < 1e-12) continue;
-      // The spring's force as one XPBD iteration exerts it, lambda / h^2 = -C / (h^2 w + alpha)
-      // (XPBD eq. 18; the damper is a separate velocity pass): below the stiffness 1 / alpha
-      // when the particles are light.
-      const double k = 1.0 / (h * h * (model.inverse_mass[a] + model.inverse_mass[b]) + sp.compliance_m_per_N[j]);
-      const Eigen::Vector3d gradient = (k * sp.rest_m[j] / len) * d;  // k L0 n
-      for (int end : {sp.region_a[j], sp.region_b[j]}) {
-        const int c = end >= 0 ? column_of[end] : -1;
-        if (c < 0) continue;
-        // Contracting the spring pulls b towards a and a towards b (half per end region).
-        if (model.inverse_mass[b] > 0) jacobian.block<3, 1>(3 * b, c) -= 0.5 * gradient;
-        if (model.inverse_mass[a] > 0) jacobian.block<3, 1>(3 * a, c) += 0.5 * gradient;
-      }
-    }
-    const Eigen::VectorXd f = Eigen::Map<const Eigen::VectorXd>(force.data(), 3 * n);
-    // Normal equations of a few columns; a tiny ridge keeps a region the forces cannot see at 0.
-    Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
-    normal.diagonal().array() += 1e-9 * (normal.diagonal().maxCoeff() + 1e-30);
-    const Eigen::VectorXd dc = normal.ldlt().solve(jacobian.transpose() * f);
+  playback.run(problem.measure_steps, [&](int k) {
+    floor.add(k, state.x);
+    const Eigen::VectorXd dc = from_forces(model, state, h, column_of, columns);
+    const Eigen::VectorXd by_length = from_lengths(model, state, fitted, column_of);
     for (std::size_t r = 0; r < model.regions.size(); ++r) {
       const double now = state.region_contraction[static_cast<Eigen::Index>(r)];
       rec.contraction[r].push_back(now + (column_of[r] >= 0 ? dc[column_of[r]] : 0.0));
+      rec.length_contraction[r].push_back(by_length[static_cast<Eigen::Index>(r)]);
     }
     rec.times_s.push_back(state.time_s);
-    force_sum += force.colwise().norm().sum() / n;
+    force_sum += (state.attachment_lambda / (h * h)).colwise().norm().sum() / n;
   });
   rec.mean_coupling_force_N = force_sum / problem.measure_steps;
+  rec.floor = floor.result(sim::diagnose(model, state).has_value());
   return rec;
 }
 

@@ -8,6 +8,7 @@
 
 #include "scene/scene.h"
 #include "sim/model.h"
+#include "sim/reduced.h"
 #include "train/target.h"
 
 namespace systole::train {
@@ -15,12 +16,18 @@ namespace systole::train {
 struct Problem {
   std::string organ;
   sim::Model model;           ///< The organ's body as the scene builds it, without interactions.
+  /// How the organ's render surface follows the body (a lattice's or a myocardium's); empty:
+  /// the surface is the particles. The target moves the surface, and every error is
+  /// measured on it: what the video shows, whatever body carries it.
+  sim::Embedding embedding;
+  Eigen::Matrix3Xd surface_rest;  ///< The render surface at rest. unit: m
+  std::vector<int> surface_region;  ///< Per surface vertex: its region, -1 none.
   double dt_s = 0;            ///< The scene's step. unit: s
   double rate_hz = 0;         ///< The target's rate. unit: Hz
   int settle_steps = 0;       ///< Steps before the error is measured.
   int measure_steps = 0;      ///< Steps over which it is measured.
   TargetMotion target;
-  std::vector<Eigen::Matrix3Xd> target_at_step;  ///< Target positions at each measured step. unit: m
+  std::vector<Eigen::Matrix3Xd> target_at_step;  ///< Target surface at each measured step. unit: m
   std::vector<double> target_volume_m3;          ///< Enclosed volume of the target at each measured step. unit: m^3
   /// Per region and measured step: the target's region size (RMS distance of its vertices
   /// from their centroid) relative to rest. unit: 1
@@ -37,8 +44,12 @@ struct Problem {
 /// scene's body, step and solver, interactions left out (tuning fits the undisturbed rhythm).
 Problem make_problem(const scene::Scene& scene, std::size_t organ_index);
 
-/// Per region: the region's size relative to rest at positions x. unit: 1
-std::vector<double> region_sizes(const sim::Model& model, const Eigen::Matrix3Xd& x);
+/// Per region: the region's size (RMS distance of its surface vertices from their centroid)
+/// relative to rest, for the render surface at `surface`. unit: 1
+std::vector<double> region_sizes(const Problem& problem, const Eigen::Matrix3Xd& surface);
+
+/// The render surface of body positions x. unit: m
+void surface_of(const Problem& problem, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& surface);
 
 struct RegionError {
   double rms_pct_of_motion = 0;  ///< RMS vertex error of the region, % of the region's target motion (NaN: the target keeps it still).
@@ -57,6 +68,25 @@ struct PlaybackError {
   std::vector<RegionError> regions;
   std::vector<std::vector<double>> size;  ///< Per region and measured step, as Problem::target_size.
   bool diverged = false;      ///< The body blew up: every error is then infinite.
+};
+
+/// Sums a run's errors against the target, measured step by step on the render surface:
+/// a free playback's, or the coupled recording's (the floor: the body tied to the target).
+class ErrorMeter {
+ public:
+  explicit ErrorMeter(const Problem& problem);
+  /// Adds measured step k (0-based) with the body at positions x.
+  void add(int k, const Eigen::Matrix3Xd& x);
+  /// The figures so far; every error infinite when `diverged` or a position was not finite.
+  PlaybackError result(bool diverged = false) const;
+
+ private:
+  const Problem& problem_;
+  Eigen::Matrix3Xd surface_;
+  PlaybackError error_;  ///< The sizes, per region and step.
+  std::vector<double> region_sq_;
+  std::vector<int> region_count_;
+  double sq_ = 0, max_sq_ = 0, volume_sq_ = 0, mean_volume_ = 0;
 };
 
 /// Runs `model` (a copy of problem.model with other drives) free from rest and measures it

@@ -25,9 +25,14 @@ std::string fixed(double v, int digits = 3) {
 /// A share in % with two decimals, or "-" when there is nothing it is a share of.
 std::string share(double pct) { return std::isnan(pct) ? "-" : fixed(pct, 2); }
 
-std::string error_row(const std::string& drives, const PlaybackError& e) {
-  return "| " + drives + " | " + fixed(e.rms_pct_of_motion, 2) + " | " + fixed(e.rms_pct_of_diagonal) + " | " +
-         fixed(e.max_pct_of_diagonal) + " | " + fixed(e.volume_percent) + " |\n";
+/// `pct` as a multiple of the floor's `floor_pct`, or "-" when the floor is 0 or unknown.
+std::string times_floor(double pct, double floor_pct) {
+  return std::isfinite(floor_pct) && floor_pct > 0 && !std::isnan(pct) ? fixed(pct / floor_pct, 2) : "-";
+}
+
+std::string error_row(const std::string& drives, const PlaybackError& e, const PlaybackError& floor) {
+  return "| " + drives + " | " + fixed(e.rms_pct_of_motion, 2) + " | " + times_floor(e.rms_pct_of_motion, floor.rms_pct_of_motion) +
+         " | " + fixed(e.rms_pct_of_diagonal) + " | " + fixed(e.max_pct_of_diagonal) + " | " + fixed(e.volume_percent) + " |\n";
 }
 
 void write_text(const std::filesystem::path& path, const std::string& text) {
@@ -46,25 +51,36 @@ std::string report_markdown(const std::string& scene_path, const std::vector<Org
   std::ostringstream o;
   o << "# Tuning report: " << scene_path << "\n\n"
     << "Errors are measured with the body running free (no coupling) over the measured cycles, "
-       "after the settling ones. The RMS vertex error is a share of the target's RMS motion about its "
+       "after the settling ones, on the organ's render surface. The floor is the body tied to the target "
+       "(the scene's coupling, drives as written): what this body reaches held to it; every figure is also given "
+       "as a multiple of it. The RMS vertex error is a share of the target's RMS motion about its "
        "mean shape (an organ held still in that shape scores 100 %), per region of the region's; it is "
        "also given in % of the organ's bounding diagonal, with the largest vertex error. Volume error "
        "in % of the target's mean volume, phase of each region's size (first harmonic) in degrees.\n\n";
   for (const OrganTuning& t : tunings) {
     o << "## " << t.organ << "\n\n"
       << "The target moves by " << fixed(1e3 * t.target_motion_m, 3) << " mm RMS about its mean shape.\n\n"
-      << "| drives | RMS % of motion | RMS % of diagonal | max % of diagonal | volume % |\n|---|---|---|---|---|\n"
-      << "| held still in the target's mean shape | 100.00 | " << fixed(t.target_motion_pct_of_diagonal) << " | | |\n"
-      << error_row("as written", t.written) << error_row("fitted from forces (untuned)", t.before)
-      << error_row("tuned", t.after) << "\n"
-      << t.parameters.size() << " free parameters; " << t.generations << " CMA-ES generations, " << t.evaluations
-      << " playbacks, " << fixed(t.seconds, 1) << " s wall time; stopped: " << t.stop_reason
-      << ". Mean coupling force while recording: " << fixed(t.mean_coupling_force_N, 5) << " N per particle.\n\n"
-      << "| region | RMS % of its motion, fitted | tuned | phase deg fitted | phase deg tuned | plot |\n|---|---|---|---|---|---|\n";
+      << "| drives | RMS % of motion | x floor | RMS % of diagonal | max % of diagonal | volume % |\n|---|---|---|---|---|---|\n"
+      << "| held still in the target's mean shape | 100.00 | " << times_floor(100.0, t.floor.rms_pct_of_motion) << " | "
+      << fixed(t.target_motion_pct_of_diagonal) << " | | |\n"
+      << error_row("floor: tied to the target (" + fixed(t.coupling_N_per_m, 0) + " N/m)", t.floor, t.floor)
+      << error_row("as written", t.written, t.floor)
+      << error_row("fitted from forces (untuned)", t.fitted_from_forces, t.floor)
+      << error_row("fitted from lengths (untuned)", t.fitted_from_lengths, t.floor) << error_row("tuned", t.after, t.floor)
+      << "\n"
+      << t.parameters.size() << " free parameters, searched from the fit from " << t.start_from << "; " << t.generations
+      << " CMA-ES generations, " << t.evaluations << " playbacks, " << fixed(t.seconds, 1)
+      << " s wall time; stopped: " << t.stop_reason << ". Mean coupling force while recording: "
+      << fixed(t.mean_coupling_force_N, 5) << " N per particle.\n\n";
+    if (!t.transfer.empty()) o << t.transfer << "\n\n";
+    o << "| region | floor, RMS % of its motion | fitted | tuned | tuned x floor | phase deg fitted | phase deg tuned | plot |\n"
+         "|---|---|---|---|---|---|---|---|\n";
     for (std::size_t r = 0; r < t.regions.size(); ++r) {
       const scene::Region& region = t.regions[r];
       if (region.pinned) continue;
-      o << "| " << region.name << " | " << share(t.before.regions[r].rms_pct_of_motion) << " | " << share(t.after.regions[r].rms_pct_of_motion) << " | "
+      o << "| " << region.name << " | " << share(t.floor.regions[r].rms_pct_of_motion) << " | "
+        << share(t.before.regions[r].rms_pct_of_motion) << " | " << share(t.after.regions[r].rms_pct_of_motion) << " | "
+        << times_floor(t.after.regions[r].rms_pct_of_motion, t.floor.regions[r].rms_pct_of_motion) << " | "
         << fixed(t.before.regions[r].phase_deg, 1) << " | " << fixed(t.after.regions[r].phase_deg, 1) << " | ![" << region.name << "]("
         << plot_name(t, region) << ") |\n";
     }
@@ -100,6 +116,7 @@ void write_report(const std::filesystem::path& dir, const std::string& scene_pat
       for (std::size_t k = 0; k < t.target_size[r].size(); ++k) time.push_back(t.measure_start_s + double(k) * t.dt_s);
       const std::vector<chart::SvgSeries> series = {
           {"target", "#222222", false, t.target_size[r]},
+          {"floor (tied to the target)", "#7f8c8d", true, t.floor.size[r]},
           {"fitted (untuned)", "#e08a2c", true, t.before.size[r]},
           {"tuned", "#c0392b", false, t.after.size[r]},
       };

@@ -2,12 +2,15 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <sstream>
+#include <tuple>
 
 #include "common/error.h"
 #include "common/spline.h"
 #include "mesh/animation.h"
 #include "mesh/import.h"
 #include "mesh/procedural.h"
+#include "train/transfer.h"
 
 namespace systole::train {
 
@@ -76,18 +79,66 @@ TargetMotion from_frames(const scene::Organ& organ, const mesh::OrganGeometry& g
   return TargetMotion(std::move(phases), std::move(poses));
 }
 
-TargetMotion from_animation(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
-  const Eigen::Matrix3Xd rest = to_matrix(geometry.mesh.surface.positions);
-  const std::vector<Eigen::Vector3d> undeformed = undeformed_vertices(organ);
-  if (undeformed.size() != static_cast<std::size_t>(rest.cols())) {
-    throw Error(ExitCode::kInternal, "organ '" + organ.name + "': its mesh changed size between reads");
-  }
-  mesh::AnimationPoses animation = mesh::import_animation(organ.target.animation, undeformed, organ.target.animation_samples);
-  const Eigen::Matrix3Xd from = to_matrix(undeformed);
+/// The organ's placement of a file in its mesh's frame: rest = linear * file + offset (the
+/// offset from the undeformed vertices: the centring the organ's import applied).
+std::pair<Eigen::Matrix3d, Eigen::Vector3d> placement(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
   const Eigen::Matrix3d linear = linear_part(organ);
-  std::vector<Eigen::Matrix3Xd> poses;
-  for (const auto& pose : animation.poses) poses.push_back(rest + linear * (to_matrix(pose) - from));
-  return TargetMotion(std::move(animation.phases), std::move(poses));
+  const Eigen::Matrix3Xd rest = to_matrix(geometry.mesh.surface.positions);
+  const Eigen::Matrix3Xd undeformed = to_matrix(undeformed_vertices(organ));
+  if (undeformed.cols() != rest.cols()) return {linear, Eigen::Vector3d::Zero()};
+  return {linear, (rest - linear * undeformed).rowwise().mean()};
+}
+
+train::RestSurface organ_surface(const mesh::OrganGeometry& geometry) {
+  RestSurface s{to_matrix(geometry.mesh.surface.positions), geometry.mesh.surface.triangles, {}};
+  const mesh::OrganMesh& m = geometry.mesh;
+  if (!m.part_names.empty()) {
+    for (int part : m.vertex_part) s.vertex_part_name.push_back(part >= 0 ? m.part_names[static_cast<std::size_t>(part)] : "");
+  }
+  return s;
+}
+
+TargetMotion from_animation(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
+  const int cycles = organ.target.cycles;
+  const mesh::AnimatedSurface file = mesh::read_animated_file(organ.target.animation, organ.target.animation_samples, cycles);
+  // Phases: the poses spread over one period, whatever the file's length (sampled over its
+  // last period when it holds several).
+  const double first = file.times.front(), span = file.duration / cycles;
+  std::vector<double> phases;
+  for (double t : file.times) phases.push_back((t - first) / span);
+
+  RestSurface target{to_matrix(file.rest), file.triangles, {}};
+  if (!file.parts.empty()) {
+    for (int part : file.vertex_part) target.vertex_part_name.push_back(part >= 0 ? file.parts[static_cast<std::size_t>(part)] : "");
+  }
+  const RestSurface organ_rest = organ_surface(geometry);
+  AlignOptions options;
+  std::tie(options.placed_linear, options.placed_offset) = placement(organ, geometry);
+  const std::string what = file.file + " (the target of organ '" + organ.name + "')";
+  const Alignment alignment = align(target, organ_rest, options, what);
+  RestSurface aligned = target;
+  aligned.positions = (alignment.linear * target.positions).colwise() + alignment.offset;
+
+  const SurfaceBinding binding(aligned, organ_rest);
+  std::vector<Eigen::Matrix3Xd> target_poses, poses;
+  for (const auto& p : file.poses) {
+    target_poses.push_back((alignment.linear * to_matrix(p)).colwise() + alignment.offset);
+    Eigen::Matrix3Xd organ_pose;
+    binding.apply(target_poses.back(), organ_pose);
+    poses.push_back(std::move(organ_pose));
+  }
+  const double loss = transfer_loss_pct(aligned, target_poses, organ_rest, poses);
+  TargetMotion motion(std::move(phases), std::move(poses));
+  motion.transfer_loss_pct = loss;
+  std::ostringstream note;
+  note.precision(3);
+  note << "The target " << file.file << " (" << target.positions.cols() << " vertices, " << file.poses.size()
+       << " poses) was laid on the organ's " << organ_rest.positions.cols() << " surface vertices " << alignment.how
+       << ", " << 100 * alignment.misfit << " % of the organ's size apart at rest; each organ vertex follows the nearest point "
+       << "of the target's surface (at most " << 1e3 * binding.largest_gap() << " mm away). The transfer loses " << loss
+       << " % of the target's motion (its vertices replayed from the organ's surface, against its own motion).";
+  motion.set_transfer_note(note.str());
+  return motion;
 }
 
 TargetMotion from_curves(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {

@@ -3,9 +3,12 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <algorithm>
 #include <numbers>
 #include <sstream>
 
+#include "sim/drive.h"
 #include "train/cmaes.h"
 #include "train/coupling.h"
 #include "train/fourier.h"
@@ -129,9 +132,60 @@ std::vector<int> trained_regions(const scene::Organ& organ, std::vector<bool>& d
   return fitted_regions;
 }
 
+// A drive whose waveform is kept (`shape` locked) fitted to a contraction signal: the delay
+// (on a grid of 360 over the period, then refined by golden section) and the amplitude (least
+// squares at that delay) of amplitude x phi(t - delay), each only where not locked too. A
+// Fourier fit's amplitude and delay mean something else for a sine or a cardiac waveform
+// (its harmonic 1 peaks at phase 0, a sine half a period later).
+void fit_kept_waveform(scene::Drive& d, const std::vector<double>& times_s, const std::vector<double>& signal, bool amplitude_free,
+                       bool delay_free) {
+  auto misfit = [&](double delay, double* best_amplitude) {
+    scene::Drive probe = d;
+    probe.delay_s = delay;
+    double sp = 0, pp = 0;
+    std::vector<double> phi(times_s.size());
+    for (std::size_t k = 0; k < times_s.size(); ++k) {
+      phi[k] = sim::activation(probe, times_s[k], 0.0);
+      sp += signal[k] * phi[k], pp += phi[k] * phi[k];
+    }
+    const double a = amplitude_free ? std::clamp(pp > 0 ? sp / pp : 0.0, 0.0, 0.95) : d.amplitude;
+    double sum = 0;
+    for (std::size_t k = 0; k < times_s.size(); ++k) sum += std::pow(signal[k] - a * phi[k], 2);
+    if (best_amplitude) *best_amplitude = a;
+    return sum;
+  };
+  double delay = d.delay_s;
+  if (delay_free) {
+    const double period = 1.0 / d.rate_hz;
+    const int grid = 360;
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < grid; ++i) {
+      const double m = misfit(period * i / grid, nullptr);
+      if (m < best) best = m, delay = period * i / grid;
+    }
+    double lo = delay - period / grid, hi = delay + period / grid;
+    const double golden = 0.5 * (std::sqrt(5.0) - 1);
+    for (int i = 0; i < 40; ++i) {
+      const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+      if (misfit(a, nullptr) < misfit(b, nullptr)) {
+        hi = b;
+      } else {
+        lo = a;
+      }
+    }
+    delay = 0.5 * (lo + hi);
+    delay -= period * std::floor(delay / period);
+  }
+  double amplitude = d.amplitude;
+  misfit(delay, &amplitude);
+  d.delay_s = delay;
+  d.amplitude = amplitude;
+}
+
 // The regions with each trained drive fitted as a Fourier series to the recorded signal,
 // locked parameters kept as written: CMA-ES's starting point.
-std::vector<scene::Region> fitted_regions(const scene::Organ& organ, const RecordedSignals& recorded,
+std::vector<scene::Region> fitted_regions(const scene::Organ& organ, const std::vector<double>& times_s,
+                                          const std::vector<std::vector<double>>& signal,
                                           const std::vector<bool>& drive_trained) {
   const scene::Target& t = organ.target;
   std::vector<scene::Region> start = organ.regions;
@@ -141,9 +195,15 @@ std::vector<scene::Region> fitted_regions(const scene::Organ& organ, const Recor
       if (d.waveform != scene::Waveform::kNone && !start[r].pinned) d.rate_hz = t.rate_hz, d.rate_end_hz = 0;
       continue;
     }
-    const scene::Drive fit = drive_from_series(fit_fourier(recorded.times_s, recorded.contraction[r], t.rate_hz, t.harmonics));
+    if (is_locked(t, start[r].name, "shape")) {
+      d.rate_hz = t.rate_hz;
+      d.rate_end_hz = 0;
+      fit_kept_waveform(d, times_s, signal[r], !is_locked(t, start[r].name, "amplitude"), !is_locked(t, start[r].name, "delay"));
+      continue;
+    }
+    const scene::Drive fit = drive_from_series(fit_fourier(times_s, signal[r], t.rate_hz, t.harmonics));
     const scene::Drive written = d;
-    if (!is_locked(t, start[r].name, "shape")) {
+    {
       d = scene::Drive{};
       d.waveform = scene::Waveform::kFourier;
       d.harmonics = fit.harmonics;
@@ -206,20 +266,35 @@ OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const
   out.written = play(problem, problem.model);
   log("as written: " + format_error(out.written));
 
-  // Signals from forces, fitted as Fourier series.
+  // Signals from the coupled body, from forces and from lengths, each fitted as Fourier
+  // series; the search starts from the one that plays closer to the target.
   const RecordedSignals recorded = record_coupled(problem, problem.model, t.coupling_N_per_m, fitted);
   out.mean_coupling_force_N = recorded.mean_coupling_force_N;
-  const std::vector<scene::Region> start = fitted_regions(organ, recorded, out.drive_trained);
+  out.floor = recorded.floor;
+  out.coupling_N_per_m = t.coupling_N_per_m;
+  out.transfer = problem.target.transfer_note();
+  log("floor (the body tied to the target at " + std::to_string(static_cast<int>(t.coupling_N_per_m)) +
+      " N/m): " + format_error(out.floor));
+  const std::vector<scene::Region> by_forces = fitted_regions(organ, recorded.times_s, recorded.contraction, out.drive_trained);
+  const std::vector<scene::Region> by_lengths =
+      fitted_regions(organ, recorded.times_s, recorded.length_contraction, out.drive_trained);
+  out.fitted_from_forces = play(problem, with_regions(problem.model, by_forces));
+  out.fitted_from_lengths = play(problem, with_regions(problem.model, by_lengths));
+  log("fitted from forces: " + format_error(out.fitted_from_forces) + "; mean coupling force " +
+      std::to_string(recorded.mean_coupling_force_N) + " N");
+  log("fitted from lengths: " + format_error(out.fitted_from_lengths));
+  const bool lengths = !(out.fitted_from_forces.rms_pct_of_motion < out.fitted_from_lengths.rms_pct_of_motion);
+  const std::vector<scene::Region> start = lengths ? by_lengths : by_forces;
+  out.start_from = lengths ? "lengths" : "forces";
   out.fitted = start;
-  out.before = play(problem, with_regions(problem.model, start));
-  log("fitted (untuned): " + format_error(out.before) + "; mean coupling force " + std::to_string(recorded.mean_coupling_force_N) + " N");
+  out.before = lengths ? out.fitted_from_lengths : out.fitted_from_forces;
 
   out.parameters = free_parameters(organ, start, out.drive_trained);
   const CmaesResult best = search(problem, t, start, out.parameters, settings, log);
   out.regions = decode(start, out.parameters, best.best_x);
   out.after = play(problem, with_regions(problem.model, out.regions));
   out.generations = best.generations;
-  out.evaluations = best.evaluations + 3;  // With the written, fitted and final playbacks.
+  out.evaluations = best.evaluations + 4;  // With the written, two fitted and final playbacks.
   out.stop_reason = best.stop_reason;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   log("tuned: " + format_error(out.after) + " (" + best.stop_reason + ")");

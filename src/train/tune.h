@@ -40,6 +40,11 @@ struct OrganTuning {
   std::vector<Parameter> parameters;    ///< What was free.
   std::vector<bool> drive_trained;      ///< Per region: its drive was fitted and tuned (else as written).
   PlaybackError written, before, after; ///< The scene's own drives, the untuned fit, the tuned drives.
+  PlaybackError floor;                  ///< The body tied to the target (train/coupling.h): the best it does.
+  PlaybackError fitted_from_forces, fitted_from_lengths;  ///< The two fits; `before` is the closer.
+  std::string start_from;               ///< "forces" or "lengths": the fit the search started from.
+  double coupling_N_per_m = 0;          ///< The target's coupling (what the floor was measured at). unit: N/m
+  std::string transfer;                 ///< How the target was laid on the organ and what that lost (train/transfer.h); "" for its own mesh.
   std::vector<std::vector<double>> target_size;  ///< Per region, over the measured steps (Problem::target_size).
   double measure_start_s = 0, dt_s = 0, rate_hz = 0;
   double target_motion_m = 0;                ///< Problem::target_motion_m. unit: m

@@ -289,6 +289,9 @@ ValueSpec<Target> target_spec() {
                 "targets and/or skinning) is one period."),
           field("samples", whole<int>(4, 1024), &Target::animation_samples,
                 "Poses sampled evenly from the animation over one period."),
+          field("cycles", whole<int>(1, 10000), &Target::cycles,
+                "Periods the animation holds (a clip of many beats, as `systole export --encoding frames` writes one): "
+                "its last is the target."),
           field("coupling", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Target::coupling_N_per_m,
                 "Stiffness tying each particle to its target while the driving forces are recorded."),
           field("harmonics", whole<int>(1, 16), &Target::harmonics, "Fourier harmonics of each fitted drive."),
@@ -305,8 +308,10 @@ ValueSpec<Target> target_spec() {
         t.origin = node.origin;
         if (int(!t.frames.empty()) + int(!t.curves.empty()) + int(!t.animation.empty()) != 1)
           fail(node.origin, path, "expected exactly one of frames, curves, animation");
-        if (node.find("samples") != nullptr && t.animation.empty())
-          fail(origin_of(node, "samples"), join(path, "samples"), "applies to an animation only");
+        for (const char* key : {"samples", "cycles"}) {
+          if (node.find(key) != nullptr && t.animation.empty())
+            fail(origin_of(node, key), join(path, key), "applies to an animation only");
+        }
         if (!t.animation.empty()) {
           const std::filesystem::path file = std::filesystem::path(t.animation).is_absolute()
                                                  ? std::filesystem::path(t.animation)

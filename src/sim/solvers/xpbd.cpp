@@ -90,6 +90,16 @@ void solve_attachments(const Model& model, const Attachments* coupling, State& s
   if (!coupling || !coupling->enabled()) return;
   coupling->target(t, s.attachment_target);
   const double alpha_tilde = coupling->compliance_m_per_N / (h * h);
+  if (coupling->points != nullptr && !coupling->points->empty()) {
+    // Embedded points, in order (Gauss-Seidel, the same at any thread count); each
+    // particle's multiplier sums its weighted share, so lambda / h^2 stays its force.
+    const Embedding& e = *coupling->points;
+    for (int v = 0; v < e.vertex_count(); ++v) {
+      solve_embedded_attachment(s.x, e, v, s.attachment_target.col(v), model.inverse_mass, alpha_tilde,
+                                s.attachment_lambda);
+    }
+    return;
+  }
   for (Eigen::Index i = 0; i < s.x.cols(); ++i) {
     s.attachment_lambda.col(i) +=
         solve_attachment(s.x.col(i), s.attachment_target.col(i), model.inverse_mass[i], alpha_tilde);

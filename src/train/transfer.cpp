@@ -1,0 +1,323 @@
+#include "train/transfer.h"
+
+#include <nanoflann.hpp>
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "common/error.h"
+#include "sim/contact/geometry.h"
+#include "sim/motion_error.h"
+
+namespace systole::train {
+namespace {
+
+/// Points (3 x n) under a nanoflann k-d tree: nearest neighbours in O(log n).
+class PointIndex {
+ public:
+  explicit PointIndex(Eigen::Matrix3Xd points)
+      : cloud_{std::move(points)}, tree_(3, cloud_, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
+    tree_.buildIndex();
+  }
+  /// Up to k nearest points' columns, nearest first.
+  std::vector<std::size_t> nearest(const Eigen::Vector3d& p, std::size_t k) const {
+    k = std::min<std::size_t>(k, static_cast<std::size_t>(cloud_.points.cols()));
+    std::vector<std::size_t> index(k);
+    std::vector<double> distance(k);
+    const std::size_t found = tree_.knnSearch(p.data(), k, index.data(), distance.data());
+    index.resize(found);
+    return index;
+  }
+  double distance(const Eigen::Vector3d& p) const {
+    const auto i = nearest(p, 1);
+    return i.empty() ? std::numeric_limits<double>::infinity() : (cloud_.points.col(static_cast<Eigen::Index>(i[0])) - p).norm();
+  }
+  const Eigen::Matrix3Xd& points() const { return cloud_.points; }
+
+ private:
+  struct Cloud {  // nanoflann's dataset adaptor.
+    Eigen::Matrix3Xd points;
+    std::size_t kdtree_get_point_count() const { return static_cast<std::size_t>(points.cols()); }
+    double kdtree_get_pt(std::size_t i, std::size_t d) const { return points(static_cast<Eigen::Index>(d), static_cast<Eigen::Index>(i)); }
+    template <class Box>
+    bool kdtree_get_bbox(Box&) const { return false; }
+  };
+  using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3, std::size_t>;
+  Cloud cloud_;
+  Tree tree_;
+};
+
+double diagonal(const Eigen::Matrix3Xd& p) { return (p.rowwise().maxCoeff() - p.rowwise().minCoeff()).norm(); }
+
+/// Every `stride`-th column, so alignment costs the same on a big mesh as on a small one.
+Eigen::Matrix3Xd sample(const Eigen::Matrix3Xd& p, Eigen::Index most = 3000) {
+  const Eigen::Index stride = std::max<Eigen::Index>(1, (p.cols() + most - 1) / most);
+  Eigen::Matrix3Xd out(3, (p.cols() + stride - 1) / stride);
+  for (Eigen::Index i = 0, j = 0; i < p.cols(); i += stride, ++j) out.col(j) = p.col(i);
+  return out;
+}
+
+struct Fit {
+  Eigen::Matrix3d linear = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  Eigen::Matrix3Xd apply(const Eigen::Matrix3Xd& p) const { return (linear * p).colwise() + offset; }
+};
+
+/// The RMS of both ways' nearest-vertex distances between `target` placed by `fit` and the organ.
+double misfit(const Eigen::Matrix3Xd& target, const Fit& fit, const PointIndex& organ, const Eigen::Matrix3Xd& organ_sample) {
+  const Eigen::Matrix3Xd placed = fit.apply(target);
+  const PointIndex placed_index(placed);
+  double sum = 0;
+  for (Eigen::Index i = 0; i < placed.cols(); ++i) sum += std::pow(organ.distance(placed.col(i)), 2);
+  for (Eigen::Index i = 0; i < organ_sample.cols(); ++i) sum += std::pow(placed_index.distance(organ_sample.col(i)), 2);
+  return std::sqrt(sum / double(placed.cols() + organ_sample.cols()));
+}
+
+/// Iterative closest points from `fit`: pairs both ways (every target sample with its nearest
+/// organ vertex, every organ sample with its nearest placed target vertex), then the best
+/// similarity (Umeyama 1991, Eigen::umeyama) or affine map of the pairs; 40 rounds or until
+/// the map stops moving.
+Fit closest_points(const Eigen::Matrix3Xd& target, const PointIndex& organ, const Eigen::Matrix3Xd& organ_sample, Fit fit,
+                   bool affine, double size) {
+  for (int round = 0; round < 40; ++round) {
+    const Eigen::Matrix3Xd placed = fit.apply(target);
+    const PointIndex placed_index(placed);
+    Eigen::Matrix3Xd from(3, target.cols() + organ_sample.cols()), to(3, from.cols());
+    for (Eigen::Index i = 0; i < target.cols(); ++i) {
+      from.col(i) = target.col(i);
+      to.col(i) = organ.points().col(static_cast<Eigen::Index>(organ.nearest(placed.col(i), 1)[0]));
+    }
+    for (Eigen::Index j = 0; j < organ_sample.cols(); ++j) {
+      from.col(target.cols() + j) = target.col(static_cast<Eigen::Index>(placed_index.nearest(organ_sample.col(j), 1)[0]));
+      to.col(target.cols() + j) = organ_sample.col(j);
+    }
+    Fit next;
+    if (affine && round >= 20) {  // The similarity first: an affine map from a poor start shears.
+      Eigen::MatrixXd a(from.cols(), 4);
+      a.leftCols<3>() = from.transpose();
+      a.col(3).setOnes();
+      const Eigen::MatrixXd solution = a.colPivHouseholderQr().solve(Eigen::MatrixXd(to.transpose()));  // 4 x 3
+      next.linear = solution.topRows<3>().transpose();
+      next.offset = solution.row(3).transpose();
+    } else {
+      const Eigen::Matrix4d m = Eigen::umeyama(from, to, true);
+      next.linear = m.topLeftCorner<3, 3>();
+      next.offset = m.topRightCorner<3, 1>();
+    }
+    const double moved = (next.apply(target) - placed).colwise().norm().maxCoeff();
+    fit = next;
+    if (moved < 1e-6 * size && !(affine && round < 20)) break;
+  }
+  return fit;
+}
+
+/// Principal axes of points as a right-handed rotation's columns, and their centroid.
+std::pair<Eigen::Matrix3d, Eigen::Vector3d> principal_axes(const Eigen::Matrix3Xd& p) {
+  const Eigen::Vector3d centroid = p.rowwise().mean();
+  const Eigen::Matrix3Xd centred = p.colwise() - centroid;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(centred * centred.transpose());
+  Eigen::Matrix3d axes = solver.eigenvectors();
+  if (axes.determinant() < 0) axes.col(0) *= -1;
+  return {axes, centroid};
+}
+
+}  // namespace
+
+Alignment align(const RestSurface& target, const RestSurface& organ, const AlignOptions& options, const std::string& what) {
+  const double size = diagonal(organ.positions);
+  const PointIndex organ_index(organ.positions);
+  const Eigen::Matrix3Xd organ_sample = sample(organ.positions), target_sample = sample(target.positions);
+  const bool affine = options.mode == AlignOptions::Mode::kAffine;
+  auto score = [&](const Fit& f) { return misfit(target_sample, f, organ_index, organ_sample) / size; };
+
+  struct Tried {
+    Fit fit;
+    double misfit;
+    std::string how;
+  };
+  std::vector<Tried> starts;
+  const Fit placed{options.placed_linear, options.placed_offset};
+  starts.push_back({placed, score(placed), "as placed (the organ's units and transform)"});
+  starts.push_back({Fit{}, score(Fit{}), "as it is (the scene's frame)"});
+  if (options.landmarks.size() >= 3) {
+    Eigen::Matrix3Xd from(3, options.landmarks.size()), to(3, options.landmarks.size());
+    for (std::size_t i = 0; i < options.landmarks.size(); ++i) {
+      from.col(static_cast<Eigen::Index>(i)) = options.landmarks[i].first;
+      to.col(static_cast<Eigen::Index>(i)) = options.landmarks[i].second;
+    }
+    const Eigen::Matrix4d m = Eigen::umeyama(from, to, true);
+    const Fit by_landmarks{m.topLeftCorner<3, 3>(), m.topRightCorner<3, 1>()};
+    starts.push_back({by_landmarks, score(by_landmarks), "the landmarks"});
+  }
+  // Exact enough already (a target of the organ's own mesh, placed as it is): kept as is,
+  // so the organ's own animation comes back unchanged.
+  constexpr double kExact = 1e-4;
+  std::vector<Tried> tried;
+  for (const Tried& s : starts) {
+    if (s.misfit < kExact) tried.push_back(s);
+  }
+  if (tried.empty()) {
+    // Starts for closest points: the above, and the principal axes matched (centroids on
+    // each other, sizes by the RMS radius, the four right-handed pairings of the axes).
+    const auto [organ_axes, organ_centre] = principal_axes(organ.positions);
+    const auto [target_axes, target_centre] = principal_axes(target.positions);
+    const double ratio = std::sqrt((organ.positions.colwise() - organ_centre).squaredNorm() / double(organ.positions.cols()) /
+                                   std::max(1e-300, (target.positions.colwise() - target_centre).squaredNorm() /
+                                                        double(target.positions.cols())));
+    for (const Eigen::Vector3d flip : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(-1, -1, 1), Eigen::Vector3d(-1, 1, -1),
+                                       Eigen::Vector3d(1, -1, -1)}) {
+      Fit f;
+      f.linear = ratio * organ_axes * flip.asDiagonal() * target_axes.transpose();
+      f.offset = organ_centre - f.linear * target_centre;
+      starts.push_back({f, score(f), "principal axes"});
+    }
+    for (const Tried& s : starts) {
+      const Fit f = closest_points(target_sample, organ_index, organ_sample, s.fit, affine, size);
+      tried.push_back({f, score(f), s.how + " + closest points (" + (affine ? "affine" : "rigid and scale") + ")"});
+    }
+  }
+  const Tried& best = *std::min_element(tried.begin(), tried.end(), [](const Tried& a, const Tried& b) { return a.misfit < b.misfit; });
+  Alignment out{best.fit.linear, best.fit.offset, best.misfit, 1.0, best.how};
+  const double placed_scale = std::cbrt(std::abs(options.placed_linear.determinant()));
+  out.scale_vs_placed = std::cbrt(std::abs(best.fit.linear.determinant())) / std::max(1e-300, placed_scale);
+  std::ostringstream figures;
+  figures.precision(3);
+  if (out.misfit > kMaxMisfit) {
+    figures << what << ": the target's surface cannot be laid on the organ's: the best alignment (" << best.how
+            << ") leaves them " << 100 * out.misfit << " % of the organ's size apart (RMS of the nearest-vertex distances both ways; at most "
+            << 100 * kMaxMisfit << " %), comparing the target's " << target.positions.cols() << " rest vertices with the organ's "
+            << organ.positions.cols() << " surface vertices. Is it the same organ? Give target.align.landmarks (3 or more "
+            << "pairs of matching points) to start the alignment";
+    throw Error(ExitCode::kDataError, figures.str());
+  }
+  if (out.scale_vs_placed > 2 || out.scale_vs_placed < 0.5) {
+    figures << what << ": the target is " << out.scale_vs_placed << " times the organ's size once aligned (" << best.how
+            << "): its file is in other units than the organ's mesh; give target.units";
+    throw Error(ExitCode::kDataError, figures.str());
+  }
+  return out;
+}
+
+namespace {
+
+bool same_part(const std::string& a, const std::string& b) {
+  auto last = [](const std::string& s) { return s.substr(s.rfind('/') + 1); };
+  return a == b || last(a) == b || a == last(b);
+}
+
+/// A triangle's frame at positions p: first edge, in-plane normal to it, face normal.
+Eigen::Matrix3d frame(const Eigen::Matrix3Xd& p, const Eigen::Vector3i& t) {
+  const Eigen::Vector3d e1 = p.col(t[1]) - p.col(t[0]), e2 = p.col(t[2]) - p.col(t[0]);
+  Eigen::Matrix3d f;
+  f.col(0) = e1.normalized();
+  f.col(2) = e1.cross(e2).normalized();
+  f.col(1) = f.col(2).cross(f.col(0));
+  return f;
+}
+
+}  // namespace
+
+SurfaceBinding::SurfaceBinding(const RestSurface& from, const RestSurface& to) {
+  const Eigen::Index n = to.positions.cols();
+  // Per part of `from` (and one for all): its vertices under a k-d tree, and each vertex's triangles.
+  std::map<std::string, std::vector<Eigen::Index>> part_vertices;
+  part_vertices[""];  // Every vertex.
+  for (Eigen::Index v = 0; v < from.positions.cols(); ++v) {
+    part_vertices[""].push_back(v);
+    if (!from.vertex_part_name.empty() && !from.vertex_part_name[static_cast<std::size_t>(v)].empty())
+      part_vertices[from.vertex_part_name[static_cast<std::size_t>(v)]].push_back(v);
+  }
+  std::vector<std::vector<int>> incident(static_cast<std::size_t>(from.positions.cols()));
+  std::vector<bool> usable(from.triangles.size());
+  for (std::size_t t = 0; t < from.triangles.size(); ++t) {
+    const Eigen::Vector3i& c = from.triangles[t];
+    usable[t] = (from.positions.col(c[1]) - from.positions.col(c[0])).cross(from.positions.col(c[2]) - from.positions.col(c[0])).norm() > 0;
+    for (int k = 0; k < 3; ++k) incident[static_cast<std::size_t>(c[k])].push_back(static_cast<int>(t));
+  }
+  struct Part {
+    std::vector<Eigen::Index> vertices;
+    std::unique_ptr<PointIndex> index;
+  };
+  std::map<std::string, Part> parts;
+  for (auto& [name, vertices] : part_vertices) {
+    Eigen::Matrix3Xd points(3, static_cast<Eigen::Index>(vertices.size()));
+    for (std::size_t i = 0; i < vertices.size(); ++i) points.col(static_cast<Eigen::Index>(i)) = from.positions.col(vertices[i]);
+    parts[name] = Part{vertices, std::make_unique<PointIndex>(std::move(points))};
+  }
+  auto part_of_triangle = [&](int t) {
+    return from.vertex_part_name.empty() ? std::string() : from.vertex_part_name[static_cast<std::size_t>(from.triangles[static_cast<std::size_t>(t)][0])];
+  };
+  // Which of `from`'s parts each of `to`'s part names binds to ("" every part).
+  std::map<std::string, std::string> part_for;
+  triangle_.resize(static_cast<std::size_t>(n));
+  corners_.resize(static_cast<std::size_t>(n));
+  bary_.resize(static_cast<std::size_t>(n));
+  offset_.resize(static_cast<std::size_t>(n));
+  for (Eigen::Index v = 0; v < n; ++v) {
+    const std::string name = to.vertex_part_name.empty() ? std::string() : to.vertex_part_name[static_cast<std::size_t>(v)];
+    auto found = part_for.find(name);
+    if (found == part_for.end()) {
+      std::string match;
+      for (const auto& [candidate, unused] : parts) {
+        if (!name.empty() && !candidate.empty() && same_part(candidate, name)) match = candidate;
+      }
+      found = part_for.emplace(name, match).first;
+    }
+    const Part& part = parts.at(found->second);
+    const Eigen::Vector3d p = to.positions.col(v);
+    double best = std::numeric_limits<double>::infinity();
+    int best_triangle = -1;
+    Eigen::Vector3d best_bary = Eigen::Vector3d::Zero();
+    for (std::size_t i : part.index->nearest(p, 16)) {
+      for (int t : incident[static_cast<std::size_t>(part.vertices[i])]) {
+        if (!usable[static_cast<std::size_t>(t)] || (!found->second.empty() && part_of_triangle(t) != found->second)) continue;
+        const Eigen::Vector3i& c = from.triangles[static_cast<std::size_t>(t)];
+        const auto cp = sim::contact::closest_on_triangle(p, from.positions.col(c[0]), from.positions.col(c[1]), from.positions.col(c[2]));
+        const Eigen::Vector3d q = cp.bary[0] * from.positions.col(c[0]) + cp.bary[1] * from.positions.col(c[1]) + cp.bary[2] * from.positions.col(c[2]);
+        const double d = (p - q).norm();
+        if (d < best || (d == best && t < best_triangle)) best = d, best_triangle = t, best_bary = cp.bary;
+      }
+    }
+    if (best_triangle < 0) throw Error(ExitCode::kDataError, "the target's surface has no triangle with an area near vertex " + std::to_string(v));
+    const Eigen::Vector3i& c = from.triangles[static_cast<std::size_t>(best_triangle)];
+    const Eigen::Vector3d q = best_bary[0] * from.positions.col(c[0]) + best_bary[1] * from.positions.col(c[1]) + best_bary[2] * from.positions.col(c[2]);
+    triangle_[static_cast<std::size_t>(v)] = best_triangle;
+    corners_[static_cast<std::size_t>(v)] = c;
+    bary_[static_cast<std::size_t>(v)] = best_bary;
+    offset_[static_cast<std::size_t>(v)] = frame(from.positions, c).transpose() * (p - q);
+    largest_gap_ = std::max(largest_gap_, best);
+  }
+}
+
+void SurfaceBinding::apply(const Eigen::Matrix3Xd& from_pose, Eigen::Matrix3Xd& out) const {
+  out.resize(3, static_cast<Eigen::Index>(triangle_.size()));
+  for (std::size_t v = 0; v < triangle_.size(); ++v) {
+    const Eigen::Vector3i& c = corners_[v];
+    Eigen::Vector3d p = bary_[v][0] * from_pose.col(c[0]) + bary_[v][1] * from_pose.col(c[1]) + bary_[v][2] * from_pose.col(c[2]);
+    if (!offset_[v].isZero(0)) p += frame(from_pose, c) * offset_[v];
+    out.col(static_cast<Eigen::Index>(v)) = p;
+  }
+}
+
+double transfer_loss_pct(const RestSurface& target, const std::vector<Eigen::Matrix3Xd>& target_poses, const RestSurface& organ,
+                         const std::vector<Eigen::Matrix3Xd>& organ_poses) {
+  const SurfaceBinding back(organ, target);
+  Eigen::Matrix3Xd replayed, at_rest;
+  back.apply(organ.positions, at_rest);
+  double sum = 0;
+  for (std::size_t k = 0; k < target_poses.size(); ++k) {
+    back.apply(organ_poses[k], replayed);
+    sum += ((replayed - at_rest) - (target_poses[k] - target.positions)).squaredNorm();
+  }
+  const double error = std::sqrt(sum / double(target_poses.size() * static_cast<std::size_t>(target.positions.cols())));
+  const double motion = sim::rms_motion_m(target_poses);
+  return motion > 0 ? 100.0 * error / motion : 0.0;
+}
+
+}  // namespace systole::train
