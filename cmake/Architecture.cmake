@@ -43,6 +43,7 @@ set(SYSTOLE_EXTERNAL
   "yaml-cpp:scene"
   "assimp::assimp:mesh"
   "meshoptimizer::meshoptimizer:mesh"
+  "tinyxml2::tinyxml2:mesh"
   "TinyGLTF::TinyGLTF:export")
 
 # allowed = the modules `module` may use (empty list for common); known = FALSE if not listed.

@@ -4,8 +4,8 @@
 #include <cstdio>
 
 #include "common/atomic_output.h"
+#include "common/base64.h"
 #include "common/error.h"
-#include "export/base64.h"
 #include "export/viewer_assets.h"
 #include "render/camera_matrices.h"
 #include "common/xml.h"

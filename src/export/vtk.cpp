@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "common/atomic_output.h"
+#include "common/base64.h"
 #include "common/error.h"
-#include "export/base64.h"
 #include "mesh/strain.h"
 
 namespace systole::exporter {

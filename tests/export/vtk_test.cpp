@@ -5,31 +5,13 @@
 
 #include <regex>
 
+#include "common/base64.h"
 #include "export/vtk.h"
 #include "recording_fixture.h"
 #include "support/run.h"
 
 namespace systole::test {
 namespace {
-
-std::string unbase64(const std::string& s) {
-  static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  unsigned v = 0;
-  int bits = 0;
-  for (char c : s) {
-    if (c == '=') break;
-    const auto at = alphabet.find(c);
-    if (at == std::string::npos) continue;
-    v = (v << 6) | unsigned(at);
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      out += char((v >> bits) & 0xff);
-    }
-  }
-  return out;
-}
 
 /// Every opened tag closed in order (the XML here has no text that holds '<').
 bool balanced(const std::string& xml) {
@@ -65,7 +47,7 @@ TEST(Vtk, APieceHasItsCountsAndEveryArrayItsBytes) {
   std::size_t found = 0;
   for (auto it = std::sregex_iterator(vtu.begin(), vtu.end(), array); it != std::sregex_iterator(); ++it) {
     const std::string name = (*it)[2];
-    const std::string bytes = unbase64((*it)[4]);
+    const std::string bytes = base64_decode((*it)[4].str()).value_or("");
     ASSERT_GE(bytes.size(), 4u);
     std::uint32_t count = 0;
     std::memcpy(&count, bytes.data(), 4);
