@@ -129,22 +129,6 @@ void check_shape(std::string_view text, const std::string& file) {
   }
 }
 
-// Levenshtein distance, for "did you mean".
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 }  // namespace
 
 const Node* Node::find(std::string_view key) const {
@@ -231,6 +215,37 @@ std::string printable(std::string_view text) {
 
 void fail(const Origin& origin, const std::string& path, const std::string& message) {
   throw Error(ExitCode::kDataError, printable(where(origin) + (path.empty() ? "" : path + ": ") + message));
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string yaml_scalar(std::string_view text) {
+  const std::string value(text);
+  YAML::Emitter plain;
+  plain << value;
+  // The emitter quotes most text that would not read back as itself; reading it back is the
+  // proof, and catches what it leaves plain (some versions write "null" or "~" bare).
+  try {
+    const YAML::Node back = YAML::Load(plain.c_str());
+    if (plain.good() && back.IsScalar() && back.Scalar() == value) return plain.c_str();
+  } catch (const YAML::Exception&) {
+  }
+  YAML::Emitter quoted;
+  quoted << YAML::DoubleQuoted << value;
+  return quoted.c_str();
 }
 
 std::string unknown_key_message(std::string_view key, const std::vector<std::string>& allowed) {
