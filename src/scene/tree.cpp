@@ -52,10 +52,12 @@ Node convert(const YAML::Node& in, const std::string& file, const Origin& fallba
       break;
     case YAML::NodeType::Sequence:
       out.kind = Node::Kind::kList;
+      out.flow = in.Style() == YAML::EmitterStyle::Flow;
       for (const YAML::Node& item : in) out.items.push_back(convert(item, file, out.origin, budget));
       break;
     case YAML::NodeType::Map: {
       out.kind = Node::Kind::kMap;
+      out.flow = in.Style() == YAML::EmitterStyle::Flow;
       std::unordered_map<std::string, int> first_line;  // Linear in the keys, however many.
       for (const auto& kv : in) {
         const Origin key_origin = origin_of(kv.first.Mark(), file, out.origin);

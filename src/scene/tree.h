@@ -20,6 +20,7 @@ struct Node {
   std::string scalar;             ///< kScalar: the text as written (quotes removed).
   std::vector<Node> items;        ///< kList
   std::vector<MapEntry> entries;  ///< kMap, in document order.
+  bool flow = false;              ///< kList, kMap: written inline ([a, b], {k: v}); a scene written back keeps it.
   Origin origin;
 
   /// kMap: the value of `key`, or nullptr.
