@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <string>
 #include <unordered_map>
 
@@ -235,6 +236,13 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 }
 
 std::string yaml_scalar(std::string_view text) {
+  // Most names are plain words, paths and numbered copies ("heart/left_atrium", "Heart.001"):
+  // plain without asking the emitter, so an atlas of thousands of parts lists fast. A letter,
+  // digit or '_' first keeps out "-", "---", "...", "~"; null's spellings are the words left.
+  const auto plain_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  const bool simple = !text.empty() && plain_char(text.front()) &&
+                      std::all_of(text.begin(), text.end(), [&](char c) { return plain_char(c) || c == '-' || c == '/' || c == '.'; });
+  if (simple && text != "null" && text != "Null" && text != "NULL") return std::string(text);
   const std::string value(text);
   YAML::Emitter plain;
   plain << value;

@@ -96,7 +96,8 @@ TEST(Tree, YamlScalarReadsBackAsTheSameText) {
   for (const std::string name :
        {"heart/left_atrium", "Heart.001", "Armature|Valve", "Heart: left", "left #2", "#1", "- apex", "[a, b]", "{a}",
         "null", "~", "true", "007", " padded ", "it's", "say \"hi\"", "tab\there", "two\nlines", "Herz/Vorhof_ä", "*alias",
-        "&anchor", "!tag", "%percent", "@at", "`tick`", "?", ":", "-"}) {
+        "&anchor", "!tag", "%percent", "@at", "`tick`", "?", ":", "-", "heart-0", "Heart.001", "NULL", "Null", "1e3",
+        "0x1F", "..", "a.", "---", "...", "_", "x//y"}) {
     const std::string written = yaml_scalar(name);
     const Node root = parse_yaml("part: " + written + "\n", "t.yaml");
     const Node* part = root.find("part");
