@@ -19,6 +19,7 @@ Command add_tune_command(CLI::App& app) {
     std::string scene;
     std::string output;
     std::string report;
+    std::vector<std::string> defines;
     int budget = -1;
     std::uint64_t seed = 0;
     int jobs = 0;
@@ -35,8 +36,11 @@ Command add_tune_command(CLI::App& app) {
   auto* seed = cmd->add_option("--seed", o->seed, "Seed of the search (default: the scene's seed)");
   cmd->add_option("--jobs", o->jobs, "Candidates simulated at once (default: every core); same result at any count")
       ->check(CLI::PositiveNumber);
+  add_define_option(*cmd, o->defines);
   return {cmd, [o, seed] {
-            const scene::Scene scene = scene::load(o->scene);
+            // The tuned scene is written with the -D values too (scene::Scene::overrides), so
+            // it plays what was tuned.
+            const scene::Scene scene = scene::load(o->scene, o->defines);
             // Claimed before the minutes of tuning, so a folder that is missing or read-only
             // stops the run at once rather than losing its result.
             AtomicOutput out(o->output);

@@ -11,6 +11,17 @@ int OrganMesh::part_index(const std::string& name) const {
   return -1;
 }
 
+std::vector<int> OrganMesh::parts_named(const std::string& name) const {
+  if (const int exact = part_index(name); exact >= 0) return {exact};
+  // Whole trailing segments only: "atrium" must not find "heart/left_atrium".
+  const std::string tail = "/" + name;
+  std::vector<int> found;
+  for (int i = 0; i < static_cast<int>(part_names.size()); ++i) {
+    if (part_names[i].ends_with(tail)) found.push_back(i);
+  }
+  return found;
+}
+
 std::vector<char> OrganMesh::part_mask(int part) const {
   std::vector<char> mask(surface.positions.size(), 0);
   for (std::size_t v = 0; v < mask.size() && v < vertex_part.size(); ++v) mask[v] = vertex_part[v] == part;

@@ -34,6 +34,10 @@ struct OrganMesh {
   Anatomy anatomy;
 
   int part_index(const std::string& name) const;  ///< -1 if absent.
+  /// The parts a selector's `name` means: the part of exactly that name, else every part
+  /// whose name ends in "/" + name, so "left_atrium" finds an exported organ's
+  /// "heart/left_atrium". One is a match, none unknown, several ambiguous (the caller says).
+  std::vector<int> parts_named(const std::string& name) const;
   /// Per vertex: 1 if it belongs to `part` (first or otherwise), else 0.
   std::vector<char> part_mask(int part) const;
   /// Sorts also_in, drops duplicates and pairs that repeat a vertex's first part.

@@ -9,11 +9,12 @@
 #include "common/error.h"
 #include "mesh/import.h"
 #include "mesh/procedural.h"
+#include "scene/tree.h"
 
 namespace systole::mesh {
 namespace {
 
-std::string where(const scene::Origin& origin) {
+std::string written_at(const scene::Origin& origin) {
   if (origin.file.empty()) return "";
   std::string text = origin.file;
   // Appends one piece at a time (GCC 12 warns falsely on "literal" + std::string).
@@ -22,14 +23,53 @@ std::string where(const scene::Origin& origin) {
   return text.append(": ");
 }
 
-std::string part_list(const OrganMesh& mesh) {
-  if (mesh.part_names.empty()) return "the mesh has no named parts";
-  std::string text = "available parts: ";
-  for (size_t i = 0; i < mesh.part_names.size(); ++i) {
-    if (i > 0) text += ", ";
-    text += mesh.part_names[i];
+/// A part's name as validate lists it and a scene writes it (quoted when YAML needs it).
+std::string shown(const std::string& part) { return scene::yaml_scalar(part); }
+
+/// The parts nearest `name` (by edit distance to the whole name or to its last segment,
+/// so "left_atrum" finds "heart/left_atrium"), at most 8: an atlas has thousands.
+std::string nearest_parts(const OrganMesh& mesh, const std::string& name) {
+  const std::vector<std::string>& names = mesh.part_names;
+  if (names.empty()) return "the mesh has no named parts";
+  std::vector<std::pair<std::size_t, std::size_t>> ranked;  // (distance, part)
+  for (std::size_t p = 0; p < names.size(); ++p) {
+    const std::size_t slash = names[p].rfind('/');
+    std::size_t d = scene::edit_distance(name, names[p]);
+    if (slash != std::string::npos) d = std::min(d, scene::edit_distance(name, names[p].substr(slash + 1)));
+    ranked.emplace_back(d, p);
   }
+  constexpr std::size_t kShown = 8;
+  const std::size_t shown_count = std::min(kShown, ranked.size());
+  std::partial_sort(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(shown_count), ranked.end());
+  std::string text = ranked.size() > shown_count ? "nearest of its " + std::to_string(names.size()) + " parts: "
+                                                 : "its parts, nearest first: ";
+  for (std::size_t i = 0; i < shown_count; ++i) text += (i ? ", " : "") + shown(names[ranked[i].second]);
+  if (ranked.size() > shown_count) text += " (`systole validate` lists them all once no region names a missing part)";
   return text;
+}
+
+/// The one part a region's part selector names (parts_named's rule), or an error naming the
+/// region and the key: unknown (with the nearest names), ambiguous, or without a triangle.
+int resolve_part(const OrganMesh& mesh, const scene::Region& region, const scene::Selector& selector, bool by_region_name) {
+  const std::string key = written_at(selector.origin) + "region '" + region.name + "'" +
+                          (by_region_name ? " (no select: the part named like the region)" : ": select.part");
+  const std::vector<int> parts = mesh.parts_named(selector.part);
+  if (parts.empty()) {
+    throw Error(ExitCode::kDataError,
+                key + ": the mesh has no part '" + selector.part + "'; " + nearest_parts(mesh, selector.part));
+  }
+  if (parts.size() > 1) {
+    std::string names;
+    for (const int p : parts) names += (names.empty() ? "" : ", ") + shown(mesh.part_names[static_cast<std::size_t>(p)]);
+    throw Error(ExitCode::kDataError, key + ": '" + selector.part + "' ends the names of " + std::to_string(parts.size()) +
+                                          " parts (" + names + "): write the whole name, as `systole validate` lists it");
+  }
+  const std::vector<char> in_part = mesh.part_mask(parts.front());
+  if (std::find(in_part.begin(), in_part.end(), 1) == in_part.end()) {
+    throw Error(ExitCode::kDataError, key + ": the mesh's part '" + mesh.part_names[static_cast<std::size_t>(parts.front())] +
+                                          "' has no triangle (only points or lines, which are not read): select another part");
+  }
+  return parts.front();
 }
 
 // Whether a vertex at `p` is selected; `in_part` says whether it belongs to a kPart
@@ -88,7 +128,9 @@ std::vector<int> node_regions(const OrganMesh& mesh, const std::vector<scene::Re
     for (const scene::Selector& selector : select) {
       std::vector<char> in_part(myo.nodes.size(), 0);
       if (selector.kind == scene::SelectorKind::kPart) {
-        const int part = mesh.part_index(selector.part);
+        // chosen_by, run first, has refused a part that is not exactly one.
+        const std::vector<int> parts = mesh.parts_named(selector.part);
+        const int part = parts.size() == 1 ? parts.front() : -1;
         for (std::size_t n = 0; n < myo.nodes.size(); ++n) in_part[n] = myo.node_part[n] == part;
         for (const auto& [n, p] : myo.node_also_in) in_part[n] |= p == part;
       }
@@ -141,8 +183,8 @@ void check_organ_size(const OrganMesh& mesh, const scene::Organ& organ, const st
                                         " across, but an organ is 5 mm to 2 m across, so its units are wrong; " + fit);
 }
 
-// The vertices one region's selectors choose (any of them); a part that is missing or
-// has no triangle fails with the region's name.
+// The vertices one region's selectors choose (any of them); a part that is missing,
+// ambiguous or without a triangle fails with the region's name.
 std::vector<char> chosen_by(const OrganMesh& mesh, const scene::Region& region) {
   const std::vector<Eigen::Vector3d>& positions = mesh.surface.positions;
   // An empty selection means the part named like the region.
@@ -158,17 +200,7 @@ std::vector<char> chosen_by(const OrganMesh& mesh, const scene::Region& region) 
   for (const scene::Selector& selector : select) {
     std::vector<char> in_part;
     if (selector.kind == scene::SelectorKind::kPart) {
-      const int part = mesh.part_index(selector.part);
-      if (part < 0) {
-        throw Error(ExitCode::kDataError, where(selector.origin) + "region '" + region.name + "': the mesh has no part '" +
-                                              selector.part + "' (" + part_list(mesh) + ")");
-      }
-      in_part = mesh.part_mask(part);
-      if (std::find(in_part.begin(), in_part.end(), 1) == in_part.end()) {
-        throw Error(ExitCode::kDataError, where(selector.origin) + "region '" + region.name + "': the mesh's part '" +
-                                              selector.part + "' has no triangle (only points or lines, which are "
-                                              "not read): select another part");
-      }
+      in_part = mesh.part_mask(resolve_part(mesh, region, selector, region.select.empty()));
     }
     for (size_t v = 0; v < positions.size(); ++v) {
       chosen[v] |= selects(selector, !in_part.empty() && in_part[v], positions[v]);
@@ -191,7 +223,7 @@ void check_every_region_keeps(const std::vector<int>& vertex_region, const std::
       if (kept[later] > 0) taker += (taker.empty() ? "'" : ", '") + regions[later].name + "'";
     }
     throw Error(ExitCode::kDataError,
-                where(regions[r].origin) + "region '" + regions[r].name + "' keeps no vertex: every vertex it selects is " +
+                written_at(regions[r].origin) + "region '" + regions[r].name + "' keeps no vertex: every vertex it selects is " +
                     "also selected by a later region (" + taker + "), and a vertex belongs to the last region that " +
                     "selects it; narrow the later region's selectors, or list '" + regions[r].name + "' after it");
   }
@@ -210,7 +242,7 @@ std::vector<int> assign_regions(const OrganMesh& mesh, const std::vector<scene::
       if (chosen[v]) vertex_region[v] = static_cast<int>(r), ++count;
     }
     if (count == 0) {
-      throw Error(ExitCode::kDataError, where(region.origin) + "region '" + region.name +
+      throw Error(ExitCode::kDataError, written_at(region.origin) + "region '" + region.name +
                                             "' selects no vertex of the organ (selectors act on world positions, in metres)");
     }
   }
@@ -219,7 +251,7 @@ std::vector<int> assign_regions(const OrganMesh& mesh, const std::vector<scene::
 }
 
 OrganGeometry build_organ_geometry(const scene::Organ& organ) {
-  const std::string label = where(organ.origin) + "organ '" + organ.name + "'";
+  const std::string label = written_at(organ.origin) + "organ '" + organ.name + "'";
   OrganGeometry geometry;
   if (!organ.mesh.file.empty()) {
     geometry.mesh = import_mesh(organ.mesh.file);
@@ -235,7 +267,7 @@ OrganGeometry build_organ_geometry(const scene::Organ& organ) {
   if (!organ.mesh.file.empty()) {
     // Units given by a -D are the likely cause of a wrong size: the message names that -D.
     const bool units_overridden = organ.mesh.units_origin.file.starts_with("-D");
-    check_organ_size(geometry.mesh, organ, units_overridden ? where(organ.mesh.units_origin) + "organ '" + organ.name + "'" : label);
+    check_organ_size(geometry.mesh, organ, units_overridden ? written_at(organ.mesh.units_origin) + "organ '" + organ.name + "'" : label);
   }
 
   geometry.report = inspect(geometry.mesh.surface);

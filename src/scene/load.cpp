@@ -57,6 +57,7 @@ Scene load_from_string(std::string_view yaml, const std::string& file_label, con
   const std::filesystem::path label(file_label);
   Scene scene = read_scene(root, label.parent_path());
   scene.path = file_label;
+  scene.overrides = overrides;
   scene.name = label.stem().string();
   return scene;
 }

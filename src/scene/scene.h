@@ -23,6 +23,9 @@ namespace systole::scene {
 
 struct Scene {
   std::string path;         ///< The YAML file it came from.
+  /// The -D assignments applied to the file, in order: the scene is the file with these, so
+  /// a scene written back (systole tune's) applies them too.
+  std::vector<std::string> overrides;
   std::string name;         ///< File stem: names default outputs.
   std::uint64_t seed = 1;   ///< Seeds every random choice (irregular rhythms, tuning).
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  ///< unit: m/s^2

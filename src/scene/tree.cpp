@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <string>
 #include <unordered_map>
 
@@ -52,10 +53,12 @@ Node convert(const YAML::Node& in, const std::string& file, const Origin& fallba
       break;
     case YAML::NodeType::Sequence:
       out.kind = Node::Kind::kList;
+      out.flow = in.Style() == YAML::EmitterStyle::Flow;
       for (const YAML::Node& item : in) out.items.push_back(convert(item, file, out.origin, budget));
       break;
     case YAML::NodeType::Map: {
       out.kind = Node::Kind::kMap;
+      out.flow = in.Style() == YAML::EmitterStyle::Flow;
       std::unordered_map<std::string, int> first_line;  // Linear in the keys, however many.
       for (const auto& kv : in) {
         const Origin key_origin = origin_of(kv.first.Mark(), file, out.origin);
@@ -127,22 +130,6 @@ void check_shape(std::string_view text, const std::string& file) {
     else if (c == '[' || c == '{') too_deep(++flow);
     else if ((c == ']' || c == '}') && flow > 0) --flow;
   }
-}
-
-// Levenshtein distance, for "did you mean".
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
 }
 
 }  // namespace
@@ -231,6 +218,44 @@ std::string printable(std::string_view text) {
 
 void fail(const Origin& origin, const std::string& path, const std::string& message) {
   throw Error(ExitCode::kDataError, printable(where(origin) + (path.empty() ? "" : path + ": ") + message));
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string yaml_scalar(std::string_view text) {
+  // Most names are plain words, paths and numbered copies ("heart/left_atrium", "Heart.001"):
+  // plain without asking the emitter, so an atlas of thousands of parts lists fast. A letter,
+  // digit or '_' first keeps out "-", "---", "...", "~"; null's spellings are the words left.
+  const auto plain_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  const bool simple = !text.empty() && plain_char(text.front()) &&
+                      std::all_of(text.begin(), text.end(), [&](char c) { return plain_char(c) || c == '-' || c == '/' || c == '.'; });
+  if (simple && text != "null" && text != "Null" && text != "NULL") return std::string(text);
+  const std::string value(text);
+  YAML::Emitter plain;
+  plain << value;
+  // The emitter quotes most text that would not read back as itself; reading it back is the
+  // proof, and catches what it leaves plain (some versions write "null" or "~" bare).
+  try {
+    const YAML::Node back = YAML::Load(plain.c_str());
+    if (plain.good() && back.IsScalar() && back.Scalar() == value) return plain.c_str();
+  } catch (const YAML::Exception&) {
+  }
+  YAML::Emitter quoted;
+  quoted << YAML::DoubleQuoted << value;
+  return quoted.c_str();
 }
 
 std::string unknown_key_message(std::string_view key, const std::vector<std::string>& allowed) {

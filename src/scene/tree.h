@@ -20,6 +20,7 @@ struct Node {
   std::string scalar;             ///< kScalar: the text as written (quotes removed).
   std::vector<Node> items;        ///< kList
   std::vector<MapEntry> entries;  ///< kMap, in document order.
+  bool flow = false;              ///< kList, kMap: written inline ([a, b], {k: v}); a scene written back keeps it.
   Origin origin;
 
   /// kMap: the value of `key`, or nullptr.
@@ -55,5 +56,13 @@ std::string where(const Origin& origin);
 
 /// "unknown key 'x' (did you mean 'y'?); allowed keys: a, b, c".
 std::string unknown_key_message(std::string_view key, const std::vector<std::string>& allowed);
+
+/// Levenshtein distance: how "did you mean" finds the nearest of several names.
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+/// `text` written as a YAML scalar that reads back as exactly `text`: plain when it can be,
+/// else double-quoted. How names from files are shown to be copied into a scene: a part
+/// "heart/apex" reads back plain, but "Heart: left", "null" or " x" need quotes.
+std::string yaml_scalar(std::string_view text);
 
 }  // namespace systole::scene

@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "scene/overrides.h"
+#include "scene/tree.h"
 
 namespace systole::scene {
 
@@ -69,6 +71,39 @@ void rebase(YAML::Node node, const std::filesystem::path& from_dir, const std::f
   node = std::filesystem::absolute(from_dir / p).lexically_normal().lexically_relative(std::filesystem::absolute(to_dir)).string();
 }
 
+/// Our tree back as yaml-cpp's, for its emitter: scalars as the text they were, flow style kept.
+YAML::Node to_yaml(const Node& node) {
+  YAML::Node out;
+  switch (node.kind) {
+    case Node::Kind::kNull:
+      return YAML::Node(YAML::NodeType::Null);
+    case Node::Kind::kScalar:
+      return YAML::Node(node.scalar);
+    case Node::Kind::kList:
+      out = YAML::Node(YAML::NodeType::Sequence);
+      for (const Node& item : node.items) out.push_back(to_yaml(item));
+      break;
+    case Node::Kind::kMap:
+      out = YAML::Node(YAML::NodeType::Map);
+      for (const MapEntry& entry : node.entries) out[entry.key] = to_yaml(entry.value);
+      break;
+  }
+  if (node.flow) out.SetStyle(YAML::EmitterStyle::Flow);
+  return out;
+}
+
+/// The scene's YAML as load read it: the file again, and the -D overrides on it through the
+/// one code path that applies them (scene/overrides.h).
+YAML::Node scene_as_loaded(const Scene& scene) {
+  std::ifstream in(scene.path, std::ios::binary);
+  if (!in) throw Error(ExitCode::kNoInput, scene.path + ": cannot read the scene again to write the tuned one");
+  std::ostringstream text;
+  text << in.rdbuf();
+  Node root = parse_yaml(text.str(), scene.path);
+  for (const std::string& assignment : scene.overrides) apply_override(root, assignment);
+  return to_yaml(root);
+}
+
 std::string leading_comments(const std::string& path) {
   std::ifstream in(path);
   std::string line, out;
@@ -80,12 +115,7 @@ std::string leading_comments(const std::string& path) {
 
 std::string scene_yaml_with_regions(const Scene& scene, const std::vector<OrganRegions>& changes,
                                     const std::filesystem::path& output, const std::string& note) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(scene.path);
-  } catch (const YAML::Exception& e) {
-    throw Error(ExitCode::kNoInput, scene.path + ": cannot read the scene again to write the tuned one: " + e.what());
-  }
+  YAML::Node root = scene_as_loaded(scene);
   const std::filesystem::path from_dir = std::filesystem::path(scene.path).parent_path();
   const std::filesystem::path to_dir = output.parent_path().empty() ? std::filesystem::path(".") : output.parent_path();
   for (YAML::Node organ : root["organs"]) {

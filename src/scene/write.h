@@ -17,7 +17,8 @@ struct OrganRegions {
   std::vector<Region> regions;
 };
 
-/// The YAML text of `scene` (re-read from scene.path) with, for each organ in `changes`,
+/// The YAML text of `scene` (re-read from scene.path, its -D overrides applied as load applies
+/// them, so the text plays what was tuned) with, for each organ in `changes`,
 /// the drive and stiffness of its regions (pinned ones left alone) replaced, relative file
 /// paths rebased for a file written at `output`, and `note` (comment lines) after the
 /// file's leading comment block. Comments inside the document are lost (yaml-cpp drops

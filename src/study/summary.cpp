@@ -8,6 +8,7 @@
 #include "clip/render_detail.h"
 #include "clip/video_format.h"
 #include "mesh/inspect.h"
+#include "scene/tree.h"
 #include "sim/solvers/step_size.h"
 
 namespace systole::study {
@@ -33,7 +34,9 @@ void summarize_regions(std::ostringstream& s, const scene::Organ& organ, const w
 
 /// The mesh's parts, as a region's `part:` selector names them, with their triangles and
 /// whether each is closed on its own: how a user finds what to drive and what to pin in a
-/// file of many parts (a part that only touches others has no triangle of its own).
+/// file of many parts (a part that only touches others has no triangle of its own). Each
+/// name is written as the scene must write it (quoted when YAML needs it), so any listed
+/// name pasted after `part: ` selects that part.
 void summarize_parts(std::ostringstream& s, const world::OrganBody& body) {
   const mesh::OrganMesh& m = body.geometry.mesh;
   if (m.part_names.empty()) return;
@@ -41,7 +44,7 @@ void summarize_parts(std::ostringstream& s, const world::OrganBody& body) {
   const std::vector<mesh::TriangleMesh> surfaces = m.part_surfaces();
   for (std::size_t p = 0; p < m.part_names.size(); ++p) {
     const mesh::MeshReport r = mesh::inspect(surfaces[p]);
-    s << "    " << m.part_names[p] << ": " << r.triangles << " triangles, " << (r.closed() ? "closed" : "open") << "\n";
+    s << "    " << scene::yaml_scalar(m.part_names[p]) << ": " << r.triangles << " triangles, " << (r.closed() ? "closed" : "open") << "\n";
   }
 }
 

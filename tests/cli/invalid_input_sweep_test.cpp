@@ -51,8 +51,8 @@ void numeric_paths(const scene::KeySpec& spec, const std::string& prefix, const 
       numeric_paths(key, path + (doc == "interactions" ? ".%" : ".0"), doc + "[]", out);
     } else if (!key.keys.empty()) {
       numeric_paths(key, path, doc, out);
-    } else if (key.type != "name" && key.type != "path" && key.type != "boolean" && key.type != "one of" &&
-               key.type != "colour" && key.type != "text") {
+    } else if (key.type != "name" && key.type != "part name" && key.type != "path" && key.type != "boolean" &&
+               key.type != "one of" && key.type != "colour" && key.type != "text") {
       out.emplace_back(path, &key);
     }
   }

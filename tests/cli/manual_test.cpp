@@ -168,6 +168,7 @@ TEST(Manual, BashCompletesCommandsOptionsAndChoices) {
   // --progress=j: bash splits the word at '='.
   EXPECT_EQ(bash_complete({"systole", "render", "--progress", "=", "j"}, here), std::set<std::string>{"json"});
   EXPECT_EQ(bash_complete({"systole", "validate", "-D", "output.wid"}, here), std::set<std::string>{"output.width="});
+  EXPECT_EQ(bash_complete({"systole", "tune", "-D", "output.wid"}, here), std::set<std::string>{"output.width="});
   EXPECT_EQ(bash_complete({"systole", "compare", "--max-d"}, here), std::set<std::string>{"--max-delta"});
 }
 

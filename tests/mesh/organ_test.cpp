@@ -115,22 +115,73 @@ TEST(AssignRegions, EmptyRegionIsAnErrorWithItsOrigin) {
   }
 }
 
+/// The message assign_regions throws for `regions` on `m` (kDataError), or "".
+std::string refusal(const OrganMesh& m, const std::vector<Region>& regions) {
+  try {
+    assign_regions(m, regions);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::kDataError);
+    return e.what();
+  }
+  return "";
+}
+
+Selector part_named(const std::string& name) {
+  Selector s = selector(SelectorKind::kPart);
+  s.part = name;
+  return s;
+}
+
 TEST(AssignRegions, UnknownPartListsTheParts) {
   const OrganMesh m = two_part_box();
-  Selector part = selector(SelectorKind::kPart);
-  part.part = "middle";
-  for (const Region& r : {region("r", {part}), region("middle", {})}) {
-    try {
-      assign_regions(m, {r});
-      FAIL() << "expected an error";
-    } catch (const Error& e) {
-      const std::string what = e.what();
-      EXPECT_EQ(e.code(), ExitCode::kDataError);
-      EXPECT_NE(what.find("'middle'"), std::string::npos) << what;
-      EXPECT_NE(what.find("low, high"), std::string::npos) << what;
-      EXPECT_NE(what.find("scene.yaml:"), std::string::npos) << what;
-    }
+  for (const Region& r : {region("r", {part_named("middle")}), region("middle", {})}) {
+    const std::string what = refusal(m, {r});
+    EXPECT_NE(what.find("the mesh has no part 'middle'; its parts, nearest first: high, low"), std::string::npos) << what;
+    EXPECT_NE(what.find("scene.yaml:"), std::string::npos) << what;
   }
+  EXPECT_NE(refusal(m, {region("r", {part_named("middle")})}).find("region 'r': select.part: "), std::string::npos)
+      << "names the key";
+  EXPECT_NE(refusal(m, {region("middle", {})}).find("region 'middle' (no select: the part named like the region)"),
+            std::string::npos);
+}
+
+// An atlas has thousands of parts: the message lists the nearest few, by the whole name or
+// its last segment, not all of them.
+TEST(AssignRegions, UnknownPartAmongManyListsTheNearestFew) {
+  OrganMesh m = two_part_box();
+  m.part_names = {"heart/left_atrium", "heart/right_atrium"};
+  for (int i = 0; i < 30; ++i) m.part_names.push_back("vessel_" + std::to_string(i));
+  const std::string what = refusal(m, {region("r", {part_named("left_atrum")})});
+  EXPECT_NE(what.find("nearest of its 32 parts: heart/left_atrium, heart/right_atrium, "), std::string::npos) << what;
+  EXPECT_EQ(what.find("vessel_29"), std::string::npos) << "lists 8, not 32: " << what;
+}
+
+// Nested names (an exported organ's "heart/left_atrium") are selected as listed, or by their
+// last whole segments when only one part ends so; an exact name wins over an ending.
+TEST(AssignRegions, NestedPartNamesAreSelectedWholeOrByTheirLastSegments) {
+  OrganMesh m = two_part_box();  // Part 0: the 4 vertices at x = 0; part 1: the other 8.
+  m.part_names = {"heart/chamber/low", "heart/high"};
+  for (const std::string name : {"heart/chamber/low", "chamber/low", "low"}) {
+    EXPECT_EQ(count_of(assign_regions(m, {region("r", {part_named(name)})}), 0), 4) << name;
+  }
+  EXPECT_EQ(count_of(assign_regions(m, {region("high", {})}), 0), 8) << "a region's own name, by its ending";
+  EXPECT_NE(refusal(m, {region("r", {part_named("amber/low")})}).find("the mesh has no part 'amber/low'"),
+            std::string::npos)
+      << "whole segments only";
+  m.part_names.push_back("high");  // Part 2: one vertex.
+  m.also_in = {{0, 2}};
+  EXPECT_EQ(count_of(assign_regions(m, {region("r", {part_named("high")})}), 0), 1) << "the exact name wins";
+}
+
+TEST(AssignRegions, AnEndingSharedByTwoPartsIsAnErrorNamingBoth) {
+  OrganMesh m = two_part_box();
+  m.part_names = {"heart/wall", "lungs/wall"};
+  const std::string what = refusal(m, {region("wall", {})});
+  EXPECT_NE(what.find("scene.yaml:7:5: region 'wall'"), std::string::npos) << what;
+  EXPECT_NE(what.find("'wall' ends the names of 2 parts (heart/wall, lungs/wall): write the whole name"),
+            std::string::npos)
+      << what;
+  EXPECT_EQ(count_of(assign_regions(m, {region("r", {part_named("lungs/wall")})}), 0), 8);
 }
 
 TEST(BuildOrganGeometry, ProceduralHeartWithTransformAndRegions) {

@@ -156,6 +156,33 @@ TEST(SceneInvalid, CrossFieldRules) {
   EXPECT_NE(f.message.find("drive.samples: expected 2..1024 items; got 1"), std::string::npos) << f.message;
 }
 
+// A part is named as validate lists it, whatever its author wrote; a region's own name
+// stays a word, since it is a -D path segment (organs.heart.regions.NAME) and a file name.
+TEST(SceneInvalid, APartIsAnyTextButARegionNameStaysAWord) {
+  for (const std::string& written : {std::string("heart/left_atrium"), std::string("'Heart: left'"),
+                                     std::string("Armature|Valve.001")}) {
+    SCOPED_TRACE(written);
+    const Scene scene = load_from_string(with_organ_keys("    regions: [{name: la, select: {part: " + written + "}}]\n"),
+                                         "scenes/test.yaml");
+    const std::string unquoted = written.front() == '\'' ? written.substr(1, written.size() - 2) : written;
+    EXPECT_EQ(scene.organs[0].regions[0].select[0].part, unquoted);
+  }
+  const Scene by_define = load_from_string(with_organ_keys("    regions: [{name: la}]\n"), "scenes/test.yaml",
+                                           {"organs.heart.regions.la.select={part: heart/left_atrium}"});
+  EXPECT_EQ(by_define.organs[0].regions[0].select[0].part, "heart/left_atrium") << "a -D value takes it as the file does";
+
+  auto f = load_error(with_organ_keys("    regions: [{name: la, select: {part: ''}}]\n"));
+  EXPECT_EQ(f.code, ExitCode::kDataError);
+  EXPECT_NE(f.message.find("scenes/test.yaml:4:"), std::string::npos) << f.message;
+  EXPECT_NE(f.message.find("organs[0].regions[0].select.part: expected a part's name as `systole validate` lists it"),
+            std::string::npos) << f.message;
+  f = load_error(with_organ_keys("    regions: [{name: heart/left_atrium}]\n"));
+  EXPECT_NE(f.message.find("organs[0].regions[0].name: a name may use only letters, digits, '_' and '-'"),
+            std::string::npos) << f.message;
+  EXPECT_NE(f.message.find("name the region left_atrium"), std::string::npos) << "says how to take that part: " << f.message;
+  EXPECT_NE(f.message.find("select: {part: heart/left_atrium}"), std::string::npos) << f.message;
+}
+
 TEST(SceneInvalid, DuplicateKeyIsAnError) {
   const auto f = load_error(std::string(kMinimalOrgans) + "seed: 1\nseed: 2\n");
   EXPECT_EQ(f.message, "scenes/test.yaml:5:1: duplicate key 'seed' (first written at line 4)");

@@ -89,5 +89,25 @@ TEST(Tree, UnknownKeySuggestsOnlyCloseNames) {
   EXPECT_EQ(unknown_key_message("colour", allowed), "unknown key 'colour'; allowed keys: mass, stiffness, damping");
 }
 
+// validate lists a file's part names with yaml_scalar so that any of them, pasted after
+// `part: `, reads back as that very name: names an author may give, and ones YAML would
+// otherwise read as something else (null, a comment, a map, a flow list, a number's text).
+TEST(Tree, YamlScalarReadsBackAsTheSameText) {
+  for (const std::string name :
+       {"heart/left_atrium", "Heart.001", "Armature|Valve", "Heart: left", "left #2", "#1", "- apex", "[a, b]", "{a}",
+        "null", "~", "true", "007", " padded ", "it's", "say \"hi\"", "tab\there", "two\nlines", "Herz/Vorhof_ä", "*alias",
+        "&anchor", "!tag", "%percent", "@at", "`tick`", "?", ":", "-", "heart-0", "Heart.001", "NULL", "Null", "1e3",
+        "0x1F", "..", "a.", "---", "...", "_", "x//y"}) {
+    const std::string written = yaml_scalar(name);
+    const Node root = parse_yaml("part: " + written + "\n", "t.yaml");
+    const Node* part = root.find("part");
+    ASSERT_NE(part, nullptr) << written;
+    EXPECT_EQ(part->kind, Node::Kind::kScalar) << name << " written as " << written;
+    EXPECT_EQ(part->scalar, name) << "written as " << written;
+  }
+  EXPECT_EQ(yaml_scalar("heart/left_atrium"), "heart/left_atrium") << "plain names stay plain, as they are listed";
+  EXPECT_EQ(yaml_scalar("null"), "\"null\"");
+}
+
 }  // namespace
 }  // namespace systole::scene

@@ -112,6 +112,21 @@ TEST(WriteBack, WritingTheReloadedSceneAgainGivesTheSameText) {
   EXPECT_EQ(second, first);
 }
 
+// `systole tune -D ...` tunes the scene with the overrides: the written scene must hold them,
+// or it would play drives tuned for another body. Inline maps stay inline.
+TEST(WriteBack, TheSceneIsWrittenWithTheOverridesItWasLoadedWith) {
+  const Files f = files();
+  const Scene original = load(f.scene, {"organs.ball.body.mass=70 g", "organs.heart.regions.aorta.pinned=false"});
+  const std::string text = scene_yaml_with_regions(original, {}, f.output, "");
+  write(f.output, text);
+  const Scene tuned = load(f.output);
+  EXPECT_DOUBLE_EQ(organ(tuned, "ball").body.mass_kg, 0.07);
+  EXPECT_FALSE(region(organ(tuned, "heart"), "aorta").pinned);
+  EXPECT_DOUBLE_EQ(organ(tuned, "heart").body.mass_kg, 0.3) << "the rest as written";
+  EXPECT_NE(text.find("mesh: {procedural: heart, detail: 1}"), std::string::npos) << text;
+  EXPECT_NE(text.find("body: {mass: 70 g, stiffness: 100 N/m}"), std::string::npos) << text;
+}
+
 TEST(WriteBack, ASceneFileThatCannotBeReadAgainIsNoInput) {
   const Files f = files();
   const Scene s = load(f.scene);

@@ -89,6 +89,47 @@ TEST(KeyFrames, SameSeedGivesTheSameTunedSceneWhichRenders) {
   EXPECT_TRUE(std::filesystem::exists(dir / "png" / "frame_00015.png"));
 }
 
+/// The number before " playbacks" in tune's summary line, or -1.
+int playbacks(const std::string& text) {
+  const std::size_t at = text.find(" playbacks");
+  if (at == std::string::npos) return -1;
+  const std::size_t start = text.rfind(' ', at - 1);
+  return std::stoi(text.substr(start + 1, at - start - 1));
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// `tune -D` is render's -D: the value changes what is tuned (a budget of 600 written, 6 by
+// -D), the tuned scene holds it, and a bad key is the usual error naming the -D, exit 65,
+// before any tuning.
+TEST(KeyFrames, TuneTakesDefinesAsRenderDoes) {
+  const auto dir = write_squash_problem("squash_define", 600);
+  const std::string bin = SYSTOLE_BINARY, scene = (dir / "squash.yaml").string(), tuned = (dir / "tuned.yaml").string();
+  const std::string log = (dir / "log.txt").string();
+  ASSERT_EQ(std::system((bin + " tune " + scene + " -o " + tuned + " --jobs 1 -D organs.ball.target.budget=6" +
+                         " -D 'organs.ball.body.stiffness=250 N/m' > " + log + " 2>&1").c_str()), 0)
+      << read_text(log);
+  const int used = playbacks(read_text(log));
+  EXPECT_GT(used, 0) << read_text(log);
+  EXPECT_LE(used, 6) << "the -D budget, not the file's 600: " << read_text(log);
+  const scene::Scene reread = scene::load(tuned);
+  EXPECT_EQ(reread.organs[0].target.budget, 6);
+  EXPECT_DOUBLE_EQ(reread.organs[0].body.stiffness_N_per_m, 250) << "the tuned scene is the one tuned";
+
+  const int status = std::system((bin + " tune " + scene + " -o " + tuned + " -D organs.ball.target.budgt=6 > " + log +
+                                  " 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 65);
+  const std::string text = read_text(log);
+  EXPECT_NE(text.find("-D organs.ball.target.budgt=6: organs[0].target: unknown key 'budgt' (did you mean 'budget'?)"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("generation"), std::string::npos) << "tuned before reading the scene:\n" << text;
+}
+
 TEST(KeyFrames, AMissingOutputFolderStopsTheRunBeforeAnyTuning) {
   const auto dir = write_squash_problem("squash_no_folder", 200);
   const std::string log = (dir / "log.txt").string();

@@ -3,9 +3,12 @@
 
 #include "scene/schema/parts.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "common/input_file.h"
+#include "scene/tree.h"
 
 namespace systole::scene::schema {
 namespace {
@@ -49,12 +52,14 @@ ValueSpec<Selector> selector_map() {
   return map<Selector>(
       {
           field<Selector, std::string>(
-              "part", name_text(),
+              "part", part_text(),
               [](Selector& s) -> std::string& {
                 s.kind = SelectorKind::kPart;
                 return s.part;
               },
-              "A named part: a procedural organ's anatomical part or a mesh file's sub-mesh.")
+              "A named part, written as `systole validate` lists it: a procedural organ's anatomical part, or a "
+              "mesh file's mesh, node or material (`heart/left_atrium` also by its last segments, `left_atrium`, when "
+              "no other part ends so).")
               .shown_default("—"),
           field<Selector, Selector>(
               "sphere", sphere,
@@ -83,7 +88,10 @@ ValueSpec<Selector> selector_map() {
           fail(node.origin, path,
                "a selector has exactly one of part, sphere, box, half_space; got " +
                    std::to_string(node.entries.size()) + " keys");
-        s.origin = node.origin;
+        // A part is resolved only once the mesh is read: its errors point at the name, which
+        // a -D may have given in place of the file's.
+        const Node* part = node.find("part");
+        s.origin = part ? part->origin : node.origin;
       });
 }
 
@@ -150,10 +158,36 @@ ValueSpec<Tether> tether_spec() {
       [](const Node&, Tether& t, const std::string&, const Context&) { t.enabled = true; });
 }
 
+/// A region's name is a word (name_text): it is a -D path segment, a report's file name and a
+/// label. A part's name is any text, so a region named like a nested part is told how to
+/// take that part instead.
+ValueSpec<std::string> region_name() {
+  ValueSpec<std::string> spec = name_text();
+  spec.read = [word = spec.read](const Node& node, std::string& out, const std::string& path, const Context& ctx) {
+    const std::string& s = node.scalar;
+    if (node.kind == Node::Kind::kScalar && s.find('/') != std::string::npos && s.back() != '/') {
+      const std::string last = s.substr(s.rfind('/') + 1);
+      const bool last_is_word = std::all_of(last.begin(), last.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+      });
+      fail(node.origin, path,
+           "a name may use only letters, digits, '_' and '-' (it is a -D path segment and a file name); got " +
+               node.describe() + ". To take the part " + node.describe() + ", " +
+               (last_is_word ? "name the region " + last + " (a name selects the one part whose name ends in /" +
+                                   last + ") or " : std::string()) +
+               "give the region any name and select: {part: " + yaml_scalar(s) + "}");
+    }
+    word(node, out, path, ctx);
+  };
+  return spec;
+}
+
 ValueSpec<Region> region_spec() {
   return map<Region>(
       {
-          field("name", name_text(), &Region::name, "Unique within the organ; also the default part to select.")
+          field("name", region_name(), &Region::name,
+                "Unique within the organ; also the default part to select (the part of that name, or the one part "
+                "whose name ends in /NAME).")
               .required(),
           field("select", selection(), &Region::select,
                 "Which vertices belong to the region (a list is a union); later regions take vertices from earlier "

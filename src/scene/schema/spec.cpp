@@ -77,6 +77,21 @@ ValueSpec<std::string> name_text() {
   return spec;
 }
 
+ValueSpec<std::string> part_text() {
+  ValueSpec<std::string> spec;
+  spec.type = "part name";
+  spec.range = "as `systole validate` lists it";
+  spec.read = [](const Node& node, std::string& out, const std::string& path, const Context&) {
+    if (node.kind != Node::Kind::kScalar || node.scalar.empty())
+      fail(node.origin, path,
+           "expected a part's name as `systole validate` lists it, e.g. left_ventricle or heart/apex; got " +
+               node.describe());
+    out = node.scalar;
+  };
+  spec.show = [](const std::string& v) { return v.empty() ? std::string("—") : v; };
+  return spec;
+}
+
 ValueSpec<std::string> path_text() {
   ValueSpec<std::string> spec;
   spec.type = "path";

@@ -142,6 +142,11 @@ ValueSpec<bool> boolean();
 /// Names address list items in -D paths, so they are plain words and never all digits
 /// (organs.0 must stay an index).
 ValueSpec<std::string> name_text();
+/// A part of a mesh, as `systole validate` lists it: any text, since a file's author names
+/// its parts freely ("heart/left_atrium", "Heart.001", "Armature|Valve"). It is only ever a
+/// value, never a -D path segment or a label (a batch that sweeps it cleans it for the job's
+/// name), so nothing downstream restricts it.
+ValueSpec<std::string> part_text();
 ValueSpec<std::string> path_text();
 /// Words shown on screen (cards, captions, view titles): non-empty text of at most
 /// `max_chars`; "\n" breaks a line unless `one_line`.
