@@ -1,7 +1,10 @@
 #include "train/target.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <tuple>
 
@@ -9,7 +12,9 @@
 #include "common/spline.h"
 #include "mesh/animation.h"
 #include "mesh/import.h"
+#include "mesh/point_cache_read.h"
 #include "mesh/procedural.h"
+#include "mesh/vtu_read.h"
 #include "train/transfer.h"
 
 namespace systole::train {
@@ -98,14 +103,35 @@ train::RestSurface organ_surface(const mesh::OrganGeometry& geometry) {
   return s;
 }
 
+/// The target's file, by its extension: a point cache with its OBJ, a ParaView series, or
+/// anything assimp reads (sampled `samples` times over its last period).
+mesh::AnimatedSurface read_target_file(const scene::Organ& organ) {
+  const scene::Target& t = organ.target;
+  std::string extension = std::filesystem::path(t.animation).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (extension == ".pc2" || extension == ".mdd") return mesh::read_point_cache(t.animation);
+  if (extension == ".pvd") return mesh::read_vtu_series(t.animation, t.piece);
+  return mesh::read_animated_file(t.animation, t.animation_samples, t.cycles);
+}
+
 TargetMotion from_animation(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
   const int cycles = organ.target.cycles;
-  const mesh::AnimatedSurface file = mesh::read_animated_file(organ.target.animation, organ.target.animation_samples, cycles);
-  // Phases: the poses spread over one period, whatever the file's length (sampled over its
-  // last period when it holds several).
-  const double first = file.times.front(), span = file.duration / cycles;
+  mesh::AnimatedSurface file = read_target_file(organ);
+  // Phases: the poses of the file's last period spread over one period, whatever its length.
+  const double span = file.duration / cycles, start = file.duration - span;
   std::vector<double> phases;
-  for (double t : file.times) phases.push_back((t - first) / span);
+  std::vector<std::vector<Eigen::Vector3d>> kept;
+  for (std::size_t k = 0; k < file.times.size(); ++k) {
+    const double u = (file.times[k] - start) / span;
+    if (u < -1e-9 || u >= 1 - 1e-9) continue;
+    phases.push_back(std::max(0.0, u));
+    kept.push_back(std::move(file.poses[k]));
+  }
+  file.poses = std::move(kept);
+  if (phases.size() < 4) {
+    throw Error(ExitCode::kDataError, file.file + ": the target's last period (of " + std::to_string(cycles) + ", target.cycles) holds " +
+                                          std::to_string(phases.size()) + " poses; it needs at least 4");
+  }
 
   RestSurface target{to_matrix(file.rest), file.triangles, {}};
   if (!file.parts.empty()) {

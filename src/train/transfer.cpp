@@ -53,10 +53,52 @@ class PointIndex {
   Tree tree_;
 };
 
+/// A surface under a k-d tree of its vertices: the closest point of the surface to a point,
+/// searched among the triangles round its 8 nearest vertices (exact for surfaces that are
+/// not much coarser than the distance to them, which is what alignment and binding ask).
+class SurfaceIndex {
+ public:
+  SurfaceIndex(const Eigen::Matrix3Xd& positions, const std::vector<Eigen::Vector3i>& triangles)
+      : positions_(positions), triangles_(triangles), vertices_(positions), incident_(static_cast<std::size_t>(positions.cols())) {
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      for (int k = 0; k < 3; ++k) incident_[static_cast<std::size_t>(triangles[t][k])].push_back(static_cast<int>(t));
+    }
+  }
+  struct Hit {
+    int triangle = -1;
+    Eigen::Vector3d bary = Eigen::Vector3d::Zero();
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+    double distance = std::numeric_limits<double>::infinity();
+  };
+  Hit closest(const Eigen::Vector3d& p) const {
+    Hit best;
+    for (std::size_t i : vertices_.nearest(p, 8)) {
+      if (incident_[i].empty()) {  // A vertex of no triangle: the point itself.
+        const double d = (positions_.col(static_cast<Eigen::Index>(i)) - p).norm();
+        if (d < best.distance) best = {-1, Eigen::Vector3d::Zero(), positions_.col(static_cast<Eigen::Index>(i)), d};
+        continue;
+      }
+      for (int t : incident_[i]) {
+        const Eigen::Vector3i& c = triangles_[static_cast<std::size_t>(t)];
+        const auto cp = sim::contact::closest_on_triangle(p, positions_.col(c[0]), positions_.col(c[1]), positions_.col(c[2]));
+        const Eigen::Vector3d q = cp.bary[0] * positions_.col(c[0]) + cp.bary[1] * positions_.col(c[1]) + cp.bary[2] * positions_.col(c[2]);
+        const double d = (p - q).norm();
+        if (d < best.distance) best = {t, cp.bary, q, d};
+      }
+    }
+    return best;
+  }
+ private:
+  const Eigen::Matrix3Xd& positions_;
+  const std::vector<Eigen::Vector3i>& triangles_;
+  PointIndex vertices_;
+  std::vector<std::vector<int>> incident_;
+};
+
 double diagonal(const Eigen::Matrix3Xd& p) { return (p.rowwise().maxCoeff() - p.rowwise().minCoeff()).norm(); }
 
 /// Every `stride`-th column, so alignment costs the same on a big mesh as on a small one.
-Eigen::Matrix3Xd sample(const Eigen::Matrix3Xd& p, Eigen::Index most = 3000) {
+Eigen::Matrix3Xd sample(const Eigen::Matrix3Xd& p, Eigen::Index most = 1000) {
   const Eigen::Index stride = std::max<Eigen::Index>(1, (p.cols() + most - 1) / most);
   Eigen::Matrix3Xd out(3, (p.cols() + stride - 1) / stride);
   for (Eigen::Index i = 0, j = 0; i < p.cols(); i += stride, ++j) out.col(j) = p.col(i);
@@ -69,33 +111,41 @@ struct Fit {
   Eigen::Matrix3Xd apply(const Eigen::Matrix3Xd& p) const { return (linear * p).colwise() + offset; }
 };
 
-/// The RMS of both ways' nearest-vertex distances between `target` placed by `fit` and the organ.
-double misfit(const Eigen::Matrix3Xd& target, const Fit& fit, const PointIndex& organ, const Eigen::Matrix3Xd& organ_sample) {
-  const Eigen::Matrix3Xd placed = fit.apply(target);
-  const PointIndex placed_index(placed);
+/// The RMS of both ways' surface distances between `target` placed by `fit` and the organ:
+/// every target sample's to the organ's surface, every organ sample's to the placed target's
+/// (found in the target's own frame, through the inverse map: nearest is kept by a
+/// similarity, and nearly so by an affine map near one; the target's index is built once).
+double misfit(const SurfaceIndex& target, const Eigen::Matrix3Xd& target_sample, const Fit& fit, const SurfaceIndex& organ,
+              const Eigen::Matrix3Xd& organ_sample) {
+  const Eigen::Matrix3Xd placed_sample = fit.apply(target_sample);
+  const Eigen::Matrix3d inverse = fit.linear.inverse();
   double sum = 0;
-  for (Eigen::Index i = 0; i < placed.cols(); ++i) sum += std::pow(organ.distance(placed.col(i)), 2);
-  for (Eigen::Index i = 0; i < organ_sample.cols(); ++i) sum += std::pow(placed_index.distance(organ_sample.col(i)), 2);
-  return std::sqrt(sum / double(placed.cols() + organ_sample.cols()));
+  for (Eigen::Index i = 0; i < placed_sample.cols(); ++i) sum += std::pow(organ.closest(placed_sample.col(i)).distance, 2);
+  for (Eigen::Index i = 0; i < organ_sample.cols(); ++i) {
+    const auto hit = target.closest(inverse * (organ_sample.col(i) - fit.offset));
+    sum += (fit.linear * hit.point + fit.offset - organ_sample.col(i)).squaredNorm();
+  }
+  return std::sqrt(sum / double(placed_sample.cols() + organ_sample.cols()));
 }
 
-/// Iterative closest points from `fit`: pairs both ways (every target sample with its nearest
-/// organ vertex, every organ sample with its nearest placed target vertex), then the best
-/// similarity (Umeyama 1991, Eigen::umeyama) or affine map of the pairs; 40 rounds or until
-/// the map stops moving.
-Fit closest_points(const Eigen::Matrix3Xd& target, const PointIndex& organ, const Eigen::Matrix3Xd& organ_sample, Fit fit,
-                   bool affine, double size) {
+/// Iterative closest points from `fit`: pairs both ways (every target sample with its closest
+/// point of the organ's surface, every organ sample with its closest point of the placed
+/// target's, taken back to the target's frame by its weights), then the best similarity
+/// (Umeyama 1991, Eigen::umeyama) or affine map of the pairs; 40 rounds or until the map
+/// stops moving.
+Fit closest_points(const SurfaceIndex& target, const Eigen::Matrix3Xd& target_sample, const SurfaceIndex& organ,
+                   const Eigen::Matrix3Xd& organ_sample, Fit fit, bool affine, double size) {
   for (int round = 0; round < 40; ++round) {
-    const Eigen::Matrix3Xd placed = fit.apply(target);
-    const PointIndex placed_index(placed);
-    Eigen::Matrix3Xd from(3, target.cols() + organ_sample.cols()), to(3, from.cols());
-    for (Eigen::Index i = 0; i < target.cols(); ++i) {
-      from.col(i) = target.col(i);
-      to.col(i) = organ.points().col(static_cast<Eigen::Index>(organ.nearest(placed.col(i), 1)[0]));
+    const Eigen::Matrix3Xd placed_sample = fit.apply(target_sample);
+    const Eigen::Matrix3d inverse = fit.linear.inverse();
+    Eigen::Matrix3Xd from(3, target_sample.cols() + organ_sample.cols()), to(3, from.cols());
+    for (Eigen::Index i = 0; i < target_sample.cols(); ++i) {
+      from.col(i) = target_sample.col(i);
+      to.col(i) = organ.closest(placed_sample.col(i)).point;
     }
     for (Eigen::Index j = 0; j < organ_sample.cols(); ++j) {
-      from.col(target.cols() + j) = target.col(static_cast<Eigen::Index>(placed_index.nearest(organ_sample.col(j), 1)[0]));
-      to.col(target.cols() + j) = organ_sample.col(j);
+      from.col(target_sample.cols() + j) = target.closest(inverse * (organ_sample.col(j) - fit.offset)).point;
+      to.col(target_sample.cols() + j) = organ_sample.col(j);
     }
     Fit next;
     if (affine && round >= 20) {  // The similarity first: an affine map from a poor start shears.
@@ -110,7 +160,7 @@ Fit closest_points(const Eigen::Matrix3Xd& target, const PointIndex& organ, cons
       next.linear = m.topLeftCorner<3, 3>();
       next.offset = m.topRightCorner<3, 1>();
     }
-    const double moved = (next.apply(target) - placed).colwise().norm().maxCoeff();
+    const double moved = (next.apply(target_sample) - placed_sample).colwise().norm().maxCoeff();
     fit = next;
     if (moved < 1e-6 * size && !(affine && round < 20)) break;
   }
@@ -131,10 +181,10 @@ std::pair<Eigen::Matrix3d, Eigen::Vector3d> principal_axes(const Eigen::Matrix3X
 
 Alignment align(const RestSurface& target, const RestSurface& organ, const AlignOptions& options, const std::string& what) {
   const double size = diagonal(organ.positions);
-  const PointIndex organ_index(organ.positions);
+  const SurfaceIndex organ_index(organ.positions, organ.triangles), target_index(target.positions, target.triangles);
   const Eigen::Matrix3Xd organ_sample = sample(organ.positions), target_sample = sample(target.positions);
   const bool affine = options.mode == AlignOptions::Mode::kAffine;
-  auto score = [&](const Fit& f) { return misfit(target_sample, f, organ_index, organ_sample) / size; };
+  auto score = [&](const Fit& f) { return misfit(target_index, target_sample, f, organ_index, organ_sample) / size; };
 
   struct Tried {
     Fit fit;
@@ -178,7 +228,7 @@ Alignment align(const RestSurface& target, const RestSurface& organ, const Align
       starts.push_back({f, score(f), "principal axes"});
     }
     for (const Tried& s : starts) {
-      const Fit f = closest_points(target_sample, organ_index, organ_sample, s.fit, affine, size);
+      const Fit f = closest_points(target_index, target_sample, organ_index, organ_sample, s.fit, affine, size);
       tried.push_back({f, score(f), s.how + " + closest points (" + (affine ? "affine" : "rigid and scale") + ")"});
     }
   }
@@ -190,7 +240,7 @@ Alignment align(const RestSurface& target, const RestSurface& organ, const Align
   figures.precision(3);
   if (out.misfit > kMaxMisfit) {
     figures << what << ": the target's surface cannot be laid on the organ's: the best alignment (" << best.how
-            << ") leaves them " << 100 * out.misfit << " % of the organ's size apart (RMS of the nearest-vertex distances both ways; at most "
+            << ") leaves them " << 100 * out.misfit << " % of the organ's size apart (RMS of the surface distances both ways; at most "
             << 100 * kMaxMisfit << " %), comparing the target's " << target.positions.cols() << " rest vertices with the organ's "
             << organ.positions.cols() << " surface vertices. Is it the same organ? Give target.align.landmarks (3 or more "
             << "pairs of matching points) to start the alignment";

@@ -25,7 +25,7 @@
 namespace systole::train {
 
 /// How far apart two surfaces may lie after alignment and still be called the same organ:
-/// the RMS of both ways' nearest-vertex distances, as a share of the organ's bounding diagonal.
+/// the RMS of both ways' distances to the other surface, as a share of the organ's bounding diagonal.
 inline constexpr double kMaxMisfit = 0.05;
 
 /// A surface at rest: vertices (3 x n) and triangles, with optional part names per vertex.
@@ -50,7 +50,7 @@ struct AlignOptions {
 struct Alignment {
   Eigen::Matrix3d linear = Eigen::Matrix3d::Identity();
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();
-  double misfit = 0;        ///< RMS nearest-vertex distance both ways, share of the organ's diagonal. unit: 1
+  double misfit = 0;        ///< RMS distance to the other surface both ways, share of the organ's diagonal. unit: 1
   double scale_vs_placed = 1;  ///< The alignment's size against the file's placement (1: the units agree). unit: 1
   std::string how;          ///< "as placed", "as it is", "landmarks + closest points (similarity)", ...
 

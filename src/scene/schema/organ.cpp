@@ -319,13 +319,16 @@ ValueSpec<Target> target_spec() {
           field("curves", list(curve, 1, 256, "list of curves"), &Target::curves,
                 "Per-region size curves over one period (instead of frames)."),
           field("animation", path_text(), &Target::animation,
-                "An animated mesh file (glTF/GLB, FBX, Collada...) of the organ's own mesh: its first animation (morph "
-                "targets and/or skinning) is one period."),
+                "An animated file of the organ, in any mesh: glTF/GLB, FBX, Collada... (its first animation: morph targets "
+                "and/or skinning), a PC2 or MDD point cache with the OBJ of the same name beside it, or a ParaView series "
+                "(.pvd). It is aligned to the organ and its motion transferred onto the organ's surface."),
           field("samples", whole<int>(4, 1024), &Target::animation_samples,
                 "Poses sampled evenly from the animation over one period."),
           field("cycles", whole<int>(1, 10000), &Target::cycles,
                 "Periods the animation holds (a clip of many beats, as `systole export --encoding frames` writes one): "
                 "its last is the target."),
+          field("piece", whole<int>(0, 100000), &Target::piece,
+                "Which piece of a ParaView series is this organ (a series holds one per organ, in the scene's order)."),
           field("coupling", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Target::coupling_N_per_m,
                 "Stiffness tying each particle to its target while the driving forces are recorded."),
           field("harmonics", whole<int>(1, 16), &Target::harmonics, "Fourier harmonics of each fitted drive."),
@@ -342,7 +345,7 @@ ValueSpec<Target> target_spec() {
         t.origin = node.origin;
         if (int(!t.frames.empty()) + int(!t.curves.empty()) + int(!t.animation.empty()) != 1)
           fail(node.origin, path, "expected exactly one of frames, curves, animation");
-        for (const char* key : {"samples", "cycles"}) {
+        for (const char* key : {"samples", "cycles", "piece"}) {
           if (node.find(key) != nullptr && t.animation.empty())
             fail(origin_of(node, key), join(path, key), "applies to an animation only");
         }
