@@ -213,7 +213,7 @@ const aiScene* read_animated(Assimp::Importer& importer, const std::filesystem::
 
 }  // namespace
 
-AnimatedSurface read_animated_file(const std::filesystem::path& file, int samples, int cycles) {
+AnimatedSurface read_animated_file(const std::filesystem::path& file, int samples, int cycles, int period) {
   Assimp::Importer importer;
   const aiScene* scene = read_animated(importer, file);
   const aiAnimation* animation = scene->mAnimations[0];
@@ -244,7 +244,7 @@ AnimatedSurface read_animated_file(const std::filesystem::path& file, int sample
     base += mesh->mNumVertices;
   }
   if (out.parts.empty()) out.vertex_part.clear();
-  const double span = out.duration / std::max(1, cycles), start = out.duration - span;
+  const double span = out.duration / std::max(1, cycles), start = span * std::clamp(period, 0, std::max(1, cycles) - 1);
   for (int i = 0; i < samples; ++i) {
     const double t = start + span * double(i) / double(samples);
     out.times.push_back(t);

@@ -33,8 +33,8 @@ AnimationPoses import_animation(const std::filesystem::path& file, const std::ve
 /// The first animation of `file` as a surface of its own (mesh/animated_surface.h): its
 /// vertices as the file holds them (no welding: the animation moves them one by one, node
 /// transforms applied), its triangles, each mesh a part (named as import_mesh names it), and
-/// `samples` poses evenly spaced over the animation's last 1 / `cycles` (the whole of it for
-/// 1; for a clip of many beats, its last, most settled one). Throws as import_animation does.
-AnimatedSurface read_animated_file(const std::filesystem::path& file, int samples, int cycles);
+/// `samples` poses evenly spaced over one of the `cycles` periods the animation holds: period
+/// `period` (0-based; the whole animation for 1 cycle). Throws as import_animation does.
+AnimatedSurface read_animated_file(const std::filesystem::path& file, int samples, int cycles, int period);
 
 }  // namespace systole::mesh

@@ -158,7 +158,7 @@ struct Target {
   std::vector<TargetCurve> curves;     ///< ...or per-region size curves...
   std::string animation;               ///< ...or an animated file of any mesh (glTF/GLB..., PC2/MDD + OBJ, a .pvd series); resolved by load().
   int animation_samples = 32;          ///< Poses sampled from the animation over one period.
-  int cycles = 1;                      ///< Periods the animation holds; its last one is the target.
+  int cycles = 1;                      ///< Periods the animation holds; the one after `settle` (or its last) is the target.
   int piece = -1;                      ///< A ParaView series' piece (one per organ); -1: its only one.
   double coupling_N_per_m = 5000;      ///< Stiffness tying each particle to its target while recording. unit: N/m
   int harmonics = 3;                   ///< Fourier harmonics of a fitted drive.

@@ -12,6 +12,7 @@
 #include "common/spline.h"
 #include "mesh/animation.h"
 #include "mesh/import.h"
+#include "mesh/gltf_read.h"
 #include "mesh/point_cache_read.h"
 #include "mesh/procedural.h"
 #include "mesh/vtu_read.h"
@@ -103,6 +104,14 @@ train::RestSurface organ_surface(const mesh::OrganGeometry& geometry) {
   return s;
 }
 
+/// Which of the file's periods is the target: the one at the time training measures (after
+/// `settle` cycles), so a clip of many beats is compared at the same moment of its run (an
+/// organ that still settles - a kidney sagging on its pedicle - has not yet the shape of its
+/// last beat); its last period when it holds fewer.
+int compared_period(const scene::Target& t) {
+  return std::min(static_cast<int>(std::floor(t.settle_cycles + 1e-9)), t.cycles - 1);
+}
+
 /// The target's file, by its extension: a point cache with its OBJ, a ParaView series, or
 /// anything assimp reads (sampled `samples` times over its last period).
 mesh::AnimatedSurface read_target_file(const scene::Organ& organ) {
@@ -111,14 +120,17 @@ mesh::AnimatedSurface read_target_file(const scene::Organ& organ) {
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   if (extension == ".pc2" || extension == ".mdd") return mesh::read_point_cache(t.animation);
   if (extension == ".pvd") return mesh::read_vtu_series(t.animation, t.piece);
-  return mesh::read_animated_file(t.animation, t.animation_samples, t.cycles);
+  if (extension == ".glb" || extension == ".gltf") {
+    if (auto morphs = mesh::read_gltf_morphs(t.animation, t.animation_samples, t.cycles, compared_period(t))) return *morphs;
+  }
+  return mesh::read_animated_file(t.animation, t.animation_samples, t.cycles, compared_period(t));
 }
 
 TargetMotion from_animation(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
   const int cycles = organ.target.cycles;
   mesh::AnimatedSurface file = read_target_file(organ);
-  // Phases: the poses of the file's last period spread over one period, whatever its length.
-  const double span = file.duration / cycles, start = file.duration - span;
+  // Phases: the poses of the compared period spread over one period, whatever its length.
+  const double span = file.duration / cycles, start = span * compared_period(organ.target);
   std::vector<double> phases;
   std::vector<std::vector<Eigen::Vector3d>> kept;
   for (std::size_t k = 0; k < file.times.size(); ++k) {
@@ -129,7 +141,7 @@ TargetMotion from_animation(const scene::Organ& organ, const mesh::OrganGeometry
   }
   file.poses = std::move(kept);
   if (phases.size() < 4) {
-    throw Error(ExitCode::kDataError, file.file + ": the target's last period (of " + std::to_string(cycles) + ", target.cycles) holds " +
+    throw Error(ExitCode::kDataError, file.file + ": the target's period " + std::to_string(compared_period(organ.target) + 1) + " (of " + std::to_string(cycles) + ", target.cycles) holds " +
                                           std::to_string(phases.size()) + " poses; it needs at least 4");
   }
 

@@ -205,12 +205,13 @@ Alignment align(const RestSurface& target, const RestSurface& organ, const Align
     const Fit by_landmarks{m.topLeftCorner<3, 3>(), m.topRightCorner<3, 1>()};
     starts.push_back({by_landmarks, score(by_landmarks), "the landmarks"});
   }
-  // Exact enough already (a target of the organ's own mesh, placed as it is): kept as is,
-  // so the organ's own animation comes back unchanged.
-  constexpr double kExact = 1e-4;
+  // Close already where its file puts it (the organ's own animation, or one made on its
+  // mesh): kept there. The rest shape of such a target may differ from the organ's (a clip's
+  // pose, a kidney sagged on its pedicle) and an alignment would move that real difference
+  // away as if it were a misplacement.
   std::vector<Tried> tried;
   for (const Tried& s : starts) {
-    if (s.misfit < kExact) tried.push_back(s);
+    if (s.misfit < kPlacedClose && s.how.rfind("as ", 0) == 0) tried.push_back(s);
   }
   if (tried.empty()) {
     // Starts for closest points: the above, and the principal axes matched (centroids on

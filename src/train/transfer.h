@@ -28,6 +28,11 @@ namespace systole::train {
 /// the RMS of both ways' distances to the other surface, as a share of the organ's bounding diagonal.
 inline constexpr double kMaxMisfit = 0.05;
 
+/// A target within this of the organ as its file is placed (or as it is) is kept there, not
+/// aligned further: its rest shape may differ from the organ's for real. A share of the
+/// organ's bounding diagonal.
+inline constexpr double kPlacedClose = 0.005;
+
 /// A surface at rest: vertices (3 x n) and triangles, with optional part names per vertex.
 struct RestSurface {
   Eigen::Matrix3Xd positions;

@@ -326,7 +326,7 @@ ValueSpec<Target> target_spec() {
                 "Poses sampled evenly from the animation over one period."),
           field("cycles", whole<int>(1, 10000), &Target::cycles,
                 "Periods the animation holds (a clip of many beats, as `systole export --encoding frames` writes one): "
-                "its last is the target."),
+                "the one at the time the error is measured (after `settle`), or its last, is the target."),
           field("piece", whole<int>(0, 100000), &Target::piece,
                 "Which piece of a ParaView series is this organ (a series holds one per organ, in the scene's order)."),
           field("coupling", quantity(Dimension::kStiffness, open_closed(0, 1e9)), &Target::coupling_N_per_m,
