@@ -172,6 +172,7 @@ struct Block {
   Eigen::Matrix4d placement;
   std::vector<std::vector<float>> displacement;  ///< Per morph target, 3 per vertex.
   std::vector<double> weights;                   ///< At rest (the mesh's or node's default).
+  std::vector<Eigen::Vector3d> rest;             ///< The vertices, placed.
 };
 
 /// The weights of a sampler at time t: linear, step, or a cubic spline's values linearly.
@@ -193,6 +194,128 @@ std::vector<double> weights_at(const std::vector<float>& times, const std::vecto
   return w;
 }
 
+/// A block's vertices (placed), morph displacements and default weights from its first primitive.
+void read_block(const std::filesystem::path& file, const Document& d, const Json& primitive, const std::vector<double>& defaults,
+                const std::string& name, Block& b) {
+  const std::vector<float> p = floats(file, d, b.position, 3);
+  b.count = p.size() / 3;
+  for (std::size_t v = 0; v < b.count; ++v) b.rest.push_back((b.placement * Eigen::Vector4d(p[3 * v], p[3 * v + 1], p[3 * v + 2], 1)).head<3>());
+  for (const Json& target : primitive.value("targets", Json::array())) {
+    b.displacement.push_back(target.contains("POSITION") ? floats(file, d, target.at("POSITION").get<long>(), 3)
+                                                         : std::vector<float>(3 * b.count, 0.0f));
+    if (b.displacement.back().size() != 3 * b.count) fail(file, "a morph target of mesh '" + name + "' has another vertex count");
+  }
+  b.weights.assign(b.displacement.size(), 0.0);
+  for (std::size_t k = 0; k < b.weights.size() && k < defaults.size(); ++k) b.weights[k] = defaults[k];
+}
+
+/// Every mesh under the scene's nodes, placed by their static transforms: its vertices,
+/// parts and triangles into `out`, one block per mesh and shared vertex set.
+std::vector<Block> collect_blocks(const std::filesystem::path& file, const Document& d, AnimatedSurface& out) {
+  const Json& json = d.json;
+  std::vector<Block> blocks;
+  const long scene = json.value("scene", 0L);
+  std::vector<std::pair<long, Eigen::Matrix4d>> stack;  // Iterative: check_mesh_file bounded the graph.
+  if (json.contains("scenes") && scene >= 0 && static_cast<std::size_t>(scene) < json.at("scenes").size()) {
+    for (const Json& root : json.at("scenes").at(static_cast<std::size_t>(scene)).value("nodes", Json::array()))
+      stack.push_back({root.get<long>(), Eigen::Matrix4d::Identity()});
+  }
+  while (!stack.empty()) {
+    const auto [index, parent] = stack.back();
+    stack.pop_back();
+    const Json& node = item(file, json, "nodes", index);
+    const Eigen::Matrix4d global = parent * local_matrix(node);
+    const Json children = node.value("children", Json::array());
+    for (auto c = children.rbegin(); c != children.rend(); ++c) stack.push_back({c->get<long>(), global});
+    if (!node.contains("mesh")) continue;
+    const long mesh_index = node.at("mesh").get<long>();
+    const Json& mesh = item(file, json, "meshes", mesh_index);
+    const std::string name = !mesh.value("name", "").empty() ? mesh.value("name", "") : node.value("name", "");
+    int part = -1;
+    if (!name.empty()) {
+      const auto it = std::find(out.parts.begin(), out.parts.end(), name);
+      part = static_cast<int>(it - out.parts.begin());
+      if (it == out.parts.end()) out.parts.push_back(name);
+    }
+    std::map<long, std::size_t> block_of_position;  // Primitives sharing vertices share a block.
+    for (const Json& primitive : mesh.value("primitives", Json::array())) {
+      if (primitive.value("mode", 4) != 4) continue;  // Triangles only.
+      const Json attributes = primitive.value("attributes", Json::object());
+      if (!attributes.contains("POSITION")) continue;
+      const long position = attributes.at("POSITION").get<long>();
+      auto found = block_of_position.find(position);
+      if (found == block_of_position.end()) {
+        Block b{static_cast<int>(index), static_cast<int>(mesh_index), static_cast<int>(position), out.rest.size(), 0, global, {}, {}};
+        read_block(file, d, primitive, node.contains("weights") ? numbers(node, "weights") : numbers(mesh, "weights"), name, b);
+        for (std::size_t v = 0; v < b.count; ++v) out.vertex_part.push_back(part);
+        for (const Eigen::Vector3d& p : b.rest) out.rest.push_back(p);
+        found = block_of_position.emplace(position, blocks.size()).first;
+        blocks.push_back(std::move(b));
+      }
+      const Block& b = blocks[found->second];
+      std::vector<std::uint32_t> corner;
+      if (primitive.contains("indices")) {
+        corner = indices(file, d, primitive.at("indices").get<long>());
+      } else {
+        for (std::uint32_t v = 0; v < b.count; ++v) corner.push_back(v);
+      }
+      for (std::size_t i = 0; i + 2 < corner.size(); i += 3) {
+        if (std::max({corner[i], corner[i + 1], corner[i + 2]}) >= b.count) fail(file, "a triangle of mesh '" + name + "' indexes past its vertices");
+        out.triangles.emplace_back(static_cast<int>(b.first + corner[i]), static_cast<int>(b.first + corner[i + 1]),
+                                   static_cast<int>(b.first + corner[i + 2]));
+      }
+    }
+  }
+  return blocks;
+}
+
+/// `samples` poses of the blocks over period `period` of the `cycles` the animation holds,
+/// into `out` (its duration too).
+void sample_poses(const std::filesystem::path& file, const Document& d, const Json& animation, const std::vector<Block>& blocks,
+                  int samples, int cycles, int period, AnimatedSurface& out) {
+  const Json channels = animation.value("channels", Json::array()), samplers = animation.value("samplers", Json::array());
+  // The weights' samplers per node, and the animation's length.
+  struct Track {
+    std::vector<float> times, values;
+    std::string interpolation;
+  };
+  std::map<int, Track> track_of_node;
+  for (const Json& channel : channels) {
+    const long sampler = channel.value("sampler", -1L);
+    if (sampler < 0 || static_cast<std::size_t>(sampler) >= samplers.size()) fail(file, "a channel has no sampler");
+    const Json& s = samplers.at(static_cast<std::size_t>(sampler));
+    Track t{floats(file, d, s.value("input", -1L), 1), floats(file, d, s.value("output", -1L), 1), s.value("interpolation", "LINEAR")};
+    if (t.times.empty()) fail(file, "an animation sampler has no keys");
+    out.duration = std::max(out.duration, double(t.times.back()));
+    track_of_node[channel.at("target").value("node", -1)] = std::move(t);
+  }
+  if (!(out.duration > 0)) fail(file, "the animation has no duration");
+  const double span = out.duration / std::max(1, cycles), start = span * std::clamp(period, 0, std::max(1, cycles) - 1);
+  for (int i = 0; i < samples; ++i) {
+    const double t = start + span * double(i) / double(samples);
+    std::vector<Eigen::Vector3d> pose = out.rest;
+    for (const Block& b : blocks) {
+      std::vector<double> w = b.weights;
+      if (const auto track = track_of_node.find(b.node); track != track_of_node.end() && !w.empty()) {
+        const Track& k = track->second;
+        const std::size_t per_key = k.interpolation == "CUBICSPLINE" ? 3 * w.size() : w.size();
+        if (k.values.size() != per_key * k.times.size()) fail(file, "the weights of mesh node " + std::to_string(b.node) + " do not match its morph targets");
+        w = weights_at(k.times, k.values, k.interpolation, w.size(), t);
+      }
+      const Eigen::Matrix3d linear = b.placement.topLeftCorner<3, 3>();
+      for (std::size_t v = 0; v < b.count; ++v) {
+        Eigen::Vector3d disp = Eigen::Vector3d::Zero();
+        for (std::size_t k = 0; k < w.size(); ++k) {
+          if (w[k] != 0) disp += w[k] * Eigen::Vector3d(b.displacement[k][3 * v], b.displacement[k][3 * v + 1], b.displacement[k][3 * v + 2]);
+        }
+        pose[b.first + v] += linear * disp;
+      }
+    }
+    out.times.push_back(t);
+    out.poses.push_back(std::move(pose));
+  }
+}
+
 }  // namespace
 
 std::optional<AnimatedSurface> read_gltf_morphs(const std::filesystem::path& file, int samples, int cycles, int period) {
@@ -202,121 +325,17 @@ std::optional<AnimatedSurface> read_gltf_morphs(const std::filesystem::path& fil
     const Json& json = d.json;
     if (!json.contains("animations") || json.at("animations").empty()) fail(file, "the file holds no animation");
     const Json& animation = json.at("animations").at(0);
-    const Json channels = animation.value("channels", Json::array()), samplers = animation.value("samplers", Json::array());
-    for (const Json& channel : channels) {
+    for (const Json& channel : animation.value("channels", Json::array())) {
       if (channel.value("target", Json::object()).value("path", "") != "weights") return std::nullopt;  // Nodes move: assimp's skinning.
     }
-    // Every mesh under the scene's nodes, placed by their static transforms.
     AnimatedSurface out;
     out.file = file.string();
-    std::vector<Block> blocks;
-    const long scene = json.value("scene", 0L);
-    std::vector<std::pair<long, Eigen::Matrix4d>> stack;  // Iterative: check_mesh_file bounded the graph.
-    if (json.contains("scenes") && scene >= 0 && static_cast<std::size_t>(scene) < json.at("scenes").size()) {
-      for (const Json& root : json.at("scenes").at(static_cast<std::size_t>(scene)).value("nodes", Json::array()))
-        stack.push_back({root.get<long>(), Eigen::Matrix4d::Identity()});
-    }
-    while (!stack.empty()) {
-      const auto [index, parent] = stack.back();
-      stack.pop_back();
-      const Json& node = item(file, json, "nodes", index);
-      const Eigen::Matrix4d global = parent * local_matrix(node);
-      const Json children = node.value("children", Json::array());
-      for (auto c = children.rbegin(); c != children.rend(); ++c) stack.push_back({c->get<long>(), global});
-      if (!node.contains("mesh")) continue;
-      const long mesh_index = node.at("mesh").get<long>();
-      const Json& mesh = item(file, json, "meshes", mesh_index);
-      const std::string name = !mesh.value("name", "").empty() ? mesh.value("name", "") : node.value("name", "");
-      int part = -1;
-      if (!name.empty()) {
-        const auto it = std::find(out.parts.begin(), out.parts.end(), name);
-        part = static_cast<int>(it - out.parts.begin());
-        if (it == out.parts.end()) out.parts.push_back(name);
-      }
-      std::map<long, std::size_t> block_of_position;  // Primitives sharing vertices share a block.
-      for (const Json& primitive : mesh.value("primitives", Json::array())) {
-        if (primitive.value("mode", 4) != 4) continue;  // Triangles only.
-        const Json attributes = primitive.value("attributes", Json::object());
-        if (!attributes.contains("POSITION")) continue;
-        const long position = attributes.at("POSITION").get<long>();
-        auto found = block_of_position.find(position);
-        if (found == block_of_position.end()) {
-          Block b{static_cast<int>(index), static_cast<int>(mesh_index), static_cast<int>(position), out.rest.size(), 0, global, {}, {}};
-          const std::vector<float> p = floats(file, d, position, 3);
-          b.count = p.size() / 3;
-          for (std::size_t v = 0; v < b.count; ++v) {
-            out.rest.push_back((global * Eigen::Vector4d(p[3 * v], p[3 * v + 1], p[3 * v + 2], 1)).head<3>());
-            out.vertex_part.push_back(part);
-          }
-          for (const Json& target : primitive.value("targets", Json::array())) {
-            b.displacement.push_back(target.contains("POSITION") ? floats(file, d, target.at("POSITION").get<long>(), 3)
-                                                                 : std::vector<float>(3 * b.count, 0.0f));
-            if (b.displacement.back().size() != 3 * b.count) fail(file, "a morph target of mesh '" + name + "' has another vertex count");
-          }
-          const std::vector<double> defaults = node.contains("weights") ? numbers(node, "weights") : numbers(mesh, "weights");
-          b.weights.assign(b.displacement.size(), 0.0);
-          for (std::size_t k = 0; k < b.weights.size() && k < defaults.size(); ++k) b.weights[k] = defaults[k];
-          found = block_of_position.emplace(position, blocks.size()).first;
-          blocks.push_back(std::move(b));
-        }
-        const Block& b = blocks[found->second];
-        std::vector<std::uint32_t> corner;
-        if (primitive.contains("indices")) {
-          corner = indices(file, d, primitive.at("indices").get<long>());
-        } else {
-          for (std::uint32_t v = 0; v < b.count; ++v) corner.push_back(v);
-        }
-        for (std::size_t i = 0; i + 2 < corner.size(); i += 3) {
-          if (std::max({corner[i], corner[i + 1], corner[i + 2]}) >= b.count) fail(file, "a triangle of mesh '" + name + "' indexes past its vertices");
-          out.triangles.emplace_back(static_cast<int>(b.first + corner[i]), static_cast<int>(b.first + corner[i + 1]),
-                                     static_cast<int>(b.first + corner[i + 2]));
-        }
-      }
-    }
+    const std::vector<Block> blocks = collect_blocks(file, d, out);
     if (out.parts.empty()) out.vertex_part.clear();
     const bool morphs = std::any_of(blocks.begin(), blocks.end(), [](const Block& b) { return !b.displacement.empty(); });
     if (!morphs) return std::nullopt;
 
-    // The weights' samplers per node, and the animation's length.
-    struct Track {
-      std::vector<float> times, values;
-      std::string interpolation;
-    };
-    std::map<int, Track> track_of_node;
-    for (const Json& channel : channels) {
-      const long sampler = channel.value("sampler", -1L);
-      if (sampler < 0 || static_cast<std::size_t>(sampler) >= samplers.size()) fail(file, "a channel has no sampler");
-      const Json& s = samplers.at(static_cast<std::size_t>(sampler));
-      Track t{floats(file, d, s.value("input", -1L), 1), floats(file, d, s.value("output", -1L), 1), s.value("interpolation", "LINEAR")};
-      if (t.times.empty()) fail(file, "an animation sampler has no keys");
-      out.duration = std::max(out.duration, double(t.times.back()));
-      track_of_node[channel.at("target").value("node", -1)] = std::move(t);
-    }
-    if (!(out.duration > 0)) fail(file, "the animation has no duration");
-    const double span = out.duration / std::max(1, cycles), start = span * std::clamp(period, 0, std::max(1, cycles) - 1);
-    for (int i = 0; i < samples; ++i) {
-      const double t = start + span * double(i) / double(samples);
-      std::vector<Eigen::Vector3d> pose = out.rest;
-      for (const Block& b : blocks) {
-        std::vector<double> w = b.weights;
-        if (const auto track = track_of_node.find(b.node); track != track_of_node.end() && !w.empty()) {
-          const Track& k = track->second;
-          const std::size_t per_key = k.interpolation == "CUBICSPLINE" ? 3 * w.size() : w.size();
-          if (k.values.size() != per_key * k.times.size()) fail(file, "the weights of mesh node " + std::to_string(b.node) + " do not match its morph targets");
-          w = weights_at(k.times, k.values, k.interpolation, w.size(), t);
-        }
-        const Eigen::Matrix3d linear = b.placement.topLeftCorner<3, 3>();
-        for (std::size_t v = 0; v < b.count; ++v) {
-          Eigen::Vector3d disp = Eigen::Vector3d::Zero();
-          for (std::size_t k = 0; k < w.size(); ++k) {
-            if (w[k] != 0) disp += w[k] * Eigen::Vector3d(b.displacement[k][3 * v], b.displacement[k][3 * v + 1], b.displacement[k][3 * v + 2]);
-          }
-          pose[b.first + v] += linear * disp;
-        }
-      }
-      out.times.push_back(t);
-      out.poses.push_back(std::move(pose));
-    }
+    sample_poses(file, d, animation, blocks, samples, cycles, period, out);
     return out;
   } catch (const Json::exception& e) {
     fail(file, std::string("cannot read as glTF (") + e.what() + ")");

@@ -151,6 +151,17 @@ struct TargetCurve {
   Origin origin;
 };
 
+/// A pair of matching points that starts a target's alignment (train/transfer.h).
+struct TargetLandmark {
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();  ///< On the target, in its file's coordinates. unit: the file's
+  Eigen::Vector3d organ_m = Eigen::Vector3d::Zero();  ///< On the organ, in the scene. unit: m
+};
+
+struct TargetAlign {
+  bool affine = false;                    ///< Any affine map (else a rigid motion and a uniform scale).
+  std::vector<TargetLandmark> landmarks;  ///< Pairs starting the alignment (3 or more, or none).
+};
+
 struct Target {
   bool enabled = false;
   double rate_hz = 0;                  ///< Cycles per second the target (and the tuned drives) run at. unit: Hz
@@ -160,6 +171,8 @@ struct Target {
   int animation_samples = 32;          ///< Poses sampled from the animation over one period.
   int cycles = 1;                      ///< Periods the animation holds; the one after `settle` (or its last) is the target.
   int piece = -1;                      ///< A ParaView series' piece (one per organ); -1: its only one.
+  TargetAlign align;                   ///< How its rest surface is laid on the organ's.
+  double unit_m = 0;                   ///< Length of one unit of the animation file; 0: the organ mesh's. unit: m
   double coupling_N_per_m = 5000;      ///< Stiffness tying each particle to its target while recording. unit: N/m
   int harmonics = 3;                   ///< Fourier harmonics of a fitted drive.
   std::vector<std::string> lock;       ///< Parameters kept as written: `param`, `region` or `region.param`.

@@ -89,10 +89,12 @@ TargetMotion from_frames(const scene::Organ& organ, const mesh::OrganGeometry& g
 /// offset from the undeformed vertices: the centring the organ's import applied).
 std::pair<Eigen::Matrix3d, Eigen::Vector3d> placement(const scene::Organ& organ, const mesh::OrganGeometry& geometry) {
   const Eigen::Matrix3d linear = linear_part(organ);
+  // The file in its own units (target.units) where they are not the organ mesh's.
+  const Eigen::Matrix3d file_linear = organ.target.unit_m > 0 ? Eigen::Matrix3d(linear * (organ.target.unit_m / organ.mesh.unit_m)) : linear;
   const Eigen::Matrix3Xd rest = to_matrix(geometry.mesh.surface.positions);
   const Eigen::Matrix3Xd undeformed = to_matrix(undeformed_vertices(organ));
-  if (undeformed.cols() != rest.cols()) return {linear, Eigen::Vector3d::Zero()};
-  return {linear, (rest - linear * undeformed).rowwise().mean()};
+  if (undeformed.cols() != rest.cols()) return {file_linear, Eigen::Vector3d::Zero()};
+  return {file_linear, (rest - linear * undeformed).rowwise().mean()};
 }
 
 train::RestSurface organ_surface(const mesh::OrganGeometry& geometry) {
@@ -152,6 +154,8 @@ TargetMotion from_animation(const scene::Organ& organ, const mesh::OrganGeometry
   const RestSurface organ_rest = organ_surface(geometry);
   AlignOptions options;
   std::tie(options.placed_linear, options.placed_offset) = placement(organ, geometry);
+  if (organ.target.align.affine) options.mode = AlignOptions::Mode::kAffine;
+  for (const scene::TargetLandmark& l : organ.target.align.landmarks) options.landmarks.push_back({l.target, l.organ_m});
   const std::string what = file.file + " (the target of organ '" + organ.name + "')";
   const Alignment alignment = align(target, organ_rest, options, what);
   RestSurface aligned = target;

@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <tuple>
 
 #include "common/error.h"
 #include "sim/contact/geometry.h"
@@ -177,6 +178,43 @@ std::pair<Eigen::Matrix3d, Eigen::Vector3d> principal_axes(const Eigen::Matrix3X
   return {axes, centroid};
 }
 
+/// The principal axes of `target` turned onto `organ`'s: centroids on each other, sizes by
+/// the RMS radius, the four right-handed pairings of the axes.
+std::vector<Fit> axes_pairings(const Eigen::Matrix3Xd& target, const Eigen::Matrix3Xd& organ) {
+  const auto [organ_axes, organ_centre] = principal_axes(organ);
+  const auto [target_axes, target_centre] = principal_axes(target);
+  const double ratio = std::sqrt((organ.colwise() - organ_centre).squaredNorm() / double(organ.cols()) /
+                                 std::max(1e-300, (target.colwise() - target_centre).squaredNorm() / double(target.cols())));
+  std::vector<Fit> out;
+  for (const Eigen::Vector3d flip : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(-1, -1, 1), Eigen::Vector3d(-1, 1, -1),
+                                     Eigen::Vector3d(1, -1, -1)}) {
+    Fit f;
+    f.linear = ratio * organ_axes * flip.asDiagonal() * target_axes.transpose();
+    f.offset = organ_centre - f.linear * target_centre;
+    out.push_back(f);
+  }
+  return out;
+}
+
+/// Throws when `a` leaves the surfaces too far apart or sizes them unlike the units (align).
+void refuse_if_apart(const Alignment& a, const RestSurface& target, const RestSurface& organ, const std::string& what) {
+  std::ostringstream figures;
+  figures.precision(3);
+  if (a.misfit > kMaxMisfit) {
+    figures << what << ": the target's surface cannot be laid on the organ's: the best alignment (" << a.how
+            << ") leaves them " << 100 * a.misfit << " % of the organ's size apart (RMS of the surface distances both ways; at most "
+            << 100 * kMaxMisfit << " %), comparing the target's " << target.positions.cols() << " rest vertices with the organ's "
+            << organ.positions.cols() << " surface vertices. Is it the same organ? Give target.align.landmarks (3 or more "
+            << "pairs of matching points) to start the alignment";
+    throw Error(ExitCode::kDataError, figures.str());
+  }
+  if (a.scale_vs_placed > 2 || a.scale_vs_placed < 0.5) {
+    figures << what << ": the target is " << a.scale_vs_placed << " times the organ's size once aligned (" << a.how
+            << "): its file is in other units than the organ's mesh; give target.units";
+    throw Error(ExitCode::kDataError, figures.str());
+  }
+}
+
 }  // namespace
 
 Alignment align(const RestSurface& target, const RestSurface& organ, const AlignOptions& options, const std::string& what) {
@@ -214,20 +252,8 @@ Alignment align(const RestSurface& target, const RestSurface& organ, const Align
     if (s.misfit < kPlacedClose && s.how.rfind("as ", 0) == 0) tried.push_back(s);
   }
   if (tried.empty()) {
-    // Starts for closest points: the above, and the principal axes matched (centroids on
-    // each other, sizes by the RMS radius, the four right-handed pairings of the axes).
-    const auto [organ_axes, organ_centre] = principal_axes(organ.positions);
-    const auto [target_axes, target_centre] = principal_axes(target.positions);
-    const double ratio = std::sqrt((organ.positions.colwise() - organ_centre).squaredNorm() / double(organ.positions.cols()) /
-                                   std::max(1e-300, (target.positions.colwise() - target_centre).squaredNorm() /
-                                                        double(target.positions.cols())));
-    for (const Eigen::Vector3d flip : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(-1, -1, 1), Eigen::Vector3d(-1, 1, -1),
-                                       Eigen::Vector3d(1, -1, -1)}) {
-      Fit f;
-      f.linear = ratio * organ_axes * flip.asDiagonal() * target_axes.transpose();
-      f.offset = organ_centre - f.linear * target_centre;
-      starts.push_back({f, score(f), "principal axes"});
-    }
+    // Starts for closest points: the above, and the principal axes matched.
+    for (const Fit& f : axes_pairings(target.positions, organ.positions)) starts.push_back({f, score(f), "principal axes"});
     for (const Tried& s : starts) {
       const Fit f = closest_points(target_index, target_sample, organ_index, organ_sample, s.fit, affine, size);
       tried.push_back({f, score(f), s.how + " + closest points (" + (affine ? "affine" : "rigid and scale") + ")"});
@@ -237,21 +263,7 @@ Alignment align(const RestSurface& target, const RestSurface& organ, const Align
   Alignment out{best.fit.linear, best.fit.offset, best.misfit, 1.0, best.how};
   const double placed_scale = std::cbrt(std::abs(options.placed_linear.determinant()));
   out.scale_vs_placed = std::cbrt(std::abs(best.fit.linear.determinant())) / std::max(1e-300, placed_scale);
-  std::ostringstream figures;
-  figures.precision(3);
-  if (out.misfit > kMaxMisfit) {
-    figures << what << ": the target's surface cannot be laid on the organ's: the best alignment (" << best.how
-            << ") leaves them " << 100 * out.misfit << " % of the organ's size apart (RMS of the surface distances both ways; at most "
-            << 100 * kMaxMisfit << " %), comparing the target's " << target.positions.cols() << " rest vertices with the organ's "
-            << organ.positions.cols() << " surface vertices. Is it the same organ? Give target.align.landmarks (3 or more "
-            << "pairs of matching points) to start the alignment";
-    throw Error(ExitCode::kDataError, figures.str());
-  }
-  if (out.scale_vs_placed > 2 || out.scale_vs_placed < 0.5) {
-    figures << what << ": the target is " << out.scale_vs_placed << " times the organ's size once aligned (" << best.how
-            << "): its file is in other units than the organ's mesh; give target.units";
-    throw Error(ExitCode::kDataError, figures.str());
-  }
+  refuse_if_apart(out, target, organ, what);
   return out;
 }
 
@@ -272,6 +284,41 @@ Eigen::Matrix3d frame(const Eigen::Matrix3Xd& p, const Eigen::Vector3i& t) {
   return f;
 }
 
+/// Per vertex its triangles, and per triangle whether it has an area (a closest point on it
+/// has a frame).
+void incidence(const RestSurface& s, std::vector<std::vector<int>>& incident, std::vector<bool>& usable) {
+  incident.assign(static_cast<std::size_t>(s.positions.cols()), {});
+  usable.assign(s.triangles.size(), false);
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    const Eigen::Vector3i& c = s.triangles[t];
+    usable[t] = (s.positions.col(c[1]) - s.positions.col(c[0])).cross(s.positions.col(c[2]) - s.positions.col(c[0])).norm() > 0;
+    for (int k = 0; k < 3; ++k) incident[static_cast<std::size_t>(c[k])].push_back(static_cast<int>(t));
+  }
+}
+
+/// The closest point to p of `from`'s usable triangles round the 16 nearest of `vertices`
+/// (under `index`) that `allowed` accepts: its triangle (-1: none), weights and distance.
+template <class Allowed>
+std::tuple<int, Eigen::Vector3d, double> nearest_on(const RestSurface& from, const Eigen::Vector3d& p, const PointIndex& index,
+                                                    const std::vector<Eigen::Index>& vertices,
+                                                    const std::vector<std::vector<int>>& incident, const std::vector<bool>& usable,
+                                                    const Allowed& allowed) {
+  double best = std::numeric_limits<double>::infinity();
+  int best_triangle = -1;
+  Eigen::Vector3d best_bary = Eigen::Vector3d::Zero();
+  for (std::size_t i : index.nearest(p, 16)) {
+    for (int t : incident[static_cast<std::size_t>(vertices[i])]) {
+      if (!usable[static_cast<std::size_t>(t)] || !allowed(t)) continue;
+      const Eigen::Vector3i& c = from.triangles[static_cast<std::size_t>(t)];
+      const auto cp = sim::contact::closest_on_triangle(p, from.positions.col(c[0]), from.positions.col(c[1]), from.positions.col(c[2]));
+      const Eigen::Vector3d q = cp.bary[0] * from.positions.col(c[0]) + cp.bary[1] * from.positions.col(c[1]) + cp.bary[2] * from.positions.col(c[2]);
+      const double d = (p - q).norm();
+      if (d < best || (d == best && t < best_triangle)) best = d, best_triangle = t, best_bary = cp.bary;
+    }
+  }
+  return {best_triangle, best_bary, best};
+}
+
 }  // namespace
 
 SurfaceBinding::SurfaceBinding(const RestSurface& from, const RestSurface& to) {
@@ -284,13 +331,9 @@ SurfaceBinding::SurfaceBinding(const RestSurface& from, const RestSurface& to) {
     if (!from.vertex_part_name.empty() && !from.vertex_part_name[static_cast<std::size_t>(v)].empty())
       part_vertices[from.vertex_part_name[static_cast<std::size_t>(v)]].push_back(v);
   }
-  std::vector<std::vector<int>> incident(static_cast<std::size_t>(from.positions.cols()));
-  std::vector<bool> usable(from.triangles.size());
-  for (std::size_t t = 0; t < from.triangles.size(); ++t) {
-    const Eigen::Vector3i& c = from.triangles[t];
-    usable[t] = (from.positions.col(c[1]) - from.positions.col(c[0])).cross(from.positions.col(c[2]) - from.positions.col(c[0])).norm() > 0;
-    for (int k = 0; k < 3; ++k) incident[static_cast<std::size_t>(c[k])].push_back(static_cast<int>(t));
-  }
+  std::vector<std::vector<int>> incident;
+  std::vector<bool> usable;
+  incidence(from, incident, usable);
   struct Part {
     std::vector<Eigen::Index> vertices;
     std::unique_ptr<PointIndex> index;
@@ -322,19 +365,9 @@ SurfaceBinding::SurfaceBinding(const RestSurface& from, const RestSurface& to) {
     }
     const Part& part = parts.at(found->second);
     const Eigen::Vector3d p = to.positions.col(v);
-    double best = std::numeric_limits<double>::infinity();
-    int best_triangle = -1;
-    Eigen::Vector3d best_bary = Eigen::Vector3d::Zero();
-    for (std::size_t i : part.index->nearest(p, 16)) {
-      for (int t : incident[static_cast<std::size_t>(part.vertices[i])]) {
-        if (!usable[static_cast<std::size_t>(t)] || (!found->second.empty() && part_of_triangle(t) != found->second)) continue;
-        const Eigen::Vector3i& c = from.triangles[static_cast<std::size_t>(t)];
-        const auto cp = sim::contact::closest_on_triangle(p, from.positions.col(c[0]), from.positions.col(c[1]), from.positions.col(c[2]));
-        const Eigen::Vector3d q = cp.bary[0] * from.positions.col(c[0]) + cp.bary[1] * from.positions.col(c[1]) + cp.bary[2] * from.positions.col(c[2]);
-        const double d = (p - q).norm();
-        if (d < best || (d == best && t < best_triangle)) best = d, best_triangle = t, best_bary = cp.bary;
-      }
-    }
+    const auto [best_triangle, best_bary, best] = nearest_on(from, p, *part.index, part.vertices, incident, usable, [&](int t) {
+      return found->second.empty() || part_of_triangle(t) == found->second;
+    });
     if (best_triangle < 0) throw Error(ExitCode::kDataError, "the target's surface has no triangle with an area near vertex " + std::to_string(v));
     const Eigen::Vector3i& c = from.triangles[static_cast<std::size_t>(best_triangle)];
     const Eigen::Vector3d q = best_bary[0] * from.positions.col(c[0]) + best_bary[1] * from.positions.col(c[1]) + best_bary[2] * from.positions.col(c[2]);

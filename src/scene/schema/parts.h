@@ -16,6 +16,11 @@ ValueSpec<std::vector<PathKey>> path_keys(std::string position_doc);
 ValueSpec<ClipPlane> clip_spec();
 ValueSpec<Organ> organ_spec();
 
+// target.cpp
+ValueSpec<Target> target_spec();
+/// The target's region names and lock entries must name the organ's regions.
+void check_target_names(const Node& node, const Organ& o, const std::string& path);
+
 // body.cpp
 ValueSpec<Body> body_spec();
 /// The blood in an anatomical heart's ventricles.
