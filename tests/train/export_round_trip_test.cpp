@@ -46,5 +46,48 @@ TEST(ExportRoundTrip, ASceneExportedAsACacheOrASeriesIsItsOwnTargetWithinItsKeyF
   }
 }
 
+/// A number in `text` after `label` (e.g. "upper_pole.amplitude | 0.0234 | "), the tuned column.
+double tuned_value(const std::string& report, const std::string& parameter) {
+  std::smatch m;
+  const std::regex row("\\| " + parameter + " \\| [0-9.e+-]+ \\| ([0-9.e+-]+) \\|");
+  return std::regex_search(report, m, row) ? std::stod(m[1]) : -1;
+}
+
+TEST(ExportRoundTrip, TheKidneyIsTunedBackFromPerturbedDrivesThroughItsOwnCache) {
+  const auto dir = test::scratch("export_round_trip_kidney");
+  const std::string kidney = test::read_file(test::source("scenes/kidney.yaml"));
+  test::write_file(dir / "kidney.yaml", kidney);
+  const auto exported = test::run(test::systole() + " export " + (dir / "kidney.yaml").string() + " -o " +
+                                  (dir / "kidney.pc2").string() + " -D output.duration=2.5s");
+  ASSERT_EQ(exported.exit_code, 0) << exported.output;
+  // The drives perturbed by a third in amplitude and 40 ms or more in delay, their
+  // waveform kept; the true ones: 0.03 each, delays 0, 20 and 40 ms.
+  std::string perturbed = kidney;
+  auto replace = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = perturbed.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    perturbed.replace(at, from.size(), to);
+  };
+  replace("amplitude: 0.03, systolic_fraction: 0.35}", "amplitude: 0.04, systolic_fraction: 0.35, delay: 40 ms}");
+  replace("amplitude: 0.03, systolic_fraction: 0.35, delay: 20 ms}", "amplitude: 0.02, systolic_fraction: 0.35, delay: 65 ms}");
+  replace("amplitude: 0.03, systolic_fraction: 0.35, delay: 40 ms}", "amplitude: 0.04, systolic_fraction: 0.35, delay: 0 ms}");
+  replace("        pinned: true\n        color: \"#b5584f\"\n", "        pinned: true\n        color: \"#b5584f\"\n    target: {rate: 72 bpm, animation: kidney.pc2, cycles: 3, lock: [shape, stiffness], "
+                                   "budget: 300}\n");
+  test::write_file(dir / "tune.yaml", perturbed);
+  const auto tuned = test::run(test::systole() + " tune " + (dir / "tune.yaml").string() + " -o " + (dir / "t.yaml").string() +
+                               " --report " + (dir / "report").string());
+  ASSERT_EQ(tuned.exit_code, 0) << tuned.output;
+  const std::string report = test::read_file(dir / "report" / "report.md");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(report, m, std::regex(R"(\| tuned \| ([0-9.]+) \|)"))) << report;
+  EXPECT_LT(std::stod(m[1]), 10.0) << report;  // % of the target's motion
+  const char* regions[] = {"upper_pole", "interpolar", "lower_pole"};
+  for (int r = 0; r < 3; ++r) {
+    SCOPED_TRACE(regions[r]);
+    EXPECT_NEAR(tuned_value(report, std::string(regions[r]) + ".amplitude"), 0.03, 0.003);
+    EXPECT_NEAR(tuned_value(report, std::string(regions[r]) + ".delay"), 0.020 * r, 0.010);
+  }
+}
+
 }  // namespace
 }  // namespace systole
