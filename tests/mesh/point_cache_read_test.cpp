@@ -21,16 +21,6 @@ namespace systole::test {
 namespace {
 namespace fs = std::filesystem;
 
-/// The message of the Error `f` throws, or "" when it throws none.
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
-
 /// Every pose equals the recording's frames in float32, and the rest its rest mesh: the
 /// OBJ's nine digits are read as the decimal they say, which rounds to the float written.
 /// Compared as floats: a value read from a float32 file is one, so nothing is lost.
