@@ -5,7 +5,6 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <array>
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <map>
@@ -160,47 +159,6 @@ std::vector<Eigen::Vector3d> pose(const aiScene* scene, const aiAnimation* anima
   return out;
 }
 
-/// For each wanted vertex, the index of the file vertex at the same place (nearest within
-/// `tolerance`, the lowest index among equals), found through a hash grid of cell `tolerance`.
-std::vector<std::size_t> match_vertices(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& file_vertices,
-                                        const std::vector<Eigen::Vector3d>& wanted, double tolerance) {
-  auto cell = [&](const Eigen::Vector3d& p) {
-    return std::array<long long, 3>{static_cast<long long>(std::floor(p.x() / tolerance)),
-                                    static_cast<long long>(std::floor(p.y() / tolerance)),
-                                    static_cast<long long>(std::floor(p.z() / tolerance))};
-  };
-  std::map<std::array<long long, 3>, std::vector<std::size_t>> grid;
-  for (std::size_t i = 0; i < file_vertices.size(); ++i) grid[cell(file_vertices[i])].push_back(i);
-  std::vector<std::size_t> match(wanted.size());
-  for (std::size_t w = 0; w < wanted.size(); ++w) {
-    const auto c = cell(wanted[w]);
-    double best = tolerance;
-    std::size_t found = file_vertices.size();
-    for (long long dx = -1; dx <= 1; ++dx) {
-      for (long long dy = -1; dy <= 1; ++dy) {
-        for (long long dz = -1; dz <= 1; ++dz) {
-          const auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == grid.end()) continue;
-          for (std::size_t i : it->second) {
-            const double d = (file_vertices[i] - wanted[w]).norm();
-            if (d < best || (d == best && i < found)) best = d, found = i;
-          }
-        }
-      }
-    }
-    if (found == file_vertices.size()) {
-      throw Error(ExitCode::kDataError, file.string() + ": the organ's vertex " + std::to_string(w) +
-                                            " has no counterpart in the animation's rest pose (the animation must be of the organ's own mesh)");
-    }
-    match[w] = found;
-  }
-  return match;
-}
-
-}  // namespace
-
-namespace {
-
 /// The file's scene read for its animation, checked: no post-processing that moves or merges
 /// vertices (the file's own vertices are what the animation moves).
 const aiScene* read_animated(Assimp::Importer& importer, const std::filesystem::path& file) {
@@ -249,37 +207,6 @@ AnimatedSurface read_animated_file(const std::filesystem::path& file, int sample
     const double t = start + span * double(i) / double(samples);
     out.times.push_back(t);
     out.poses.push_back(pose(scene, animation, t * ticks_per_s));
-  }
-  return out;
-}
-
-AnimationPoses import_animation(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& rest_vertices,
-                                int samples) {
-  check_mesh_file(file);
-  Assimp::Importer importer;
-  // No post-processing that moves or merges vertices: the file's own vertices, matched below.
-  const aiScene* scene = read_with_assimp(importer, file, aiProcess_ValidateDataStructure);
-  if (scene->mNumAnimations == 0) throw Error(ExitCode::kDataError, file.string() + ": the file holds no animation");
-  const aiAnimation* animation = scene->mAnimations[0];
-  const double ticks_per_s = animation->mTicksPerSecond > 0 ? animation->mTicksPerSecond : 1.0;
-  if (!(animation->mDuration > 0)) throw Error(ExitCode::kDataError, file.string() + ": the animation has no duration");
-
-  const std::vector<Eigen::Vector3d> rest = pose(scene, nullptr, 0);
-  Eigen::AlignedBox3d box;
-  for (const auto& p : rest) box.extend(p);
-  const double tolerance = std::max(1e-5 * box.diagonal().norm(), 1e-12);
-  const std::vector<std::size_t> match = match_vertices(file, rest, rest_vertices, tolerance);
-
-  AnimationPoses out;
-  out.duration_s = animation->mDuration / ticks_per_s;
-  for (int i = 0; i < samples; ++i) {
-    const double phase = double(i) / double(samples);
-    const std::vector<Eigen::Vector3d> posed = pose(scene, animation, phase * animation->mDuration);
-    std::vector<Eigen::Vector3d> vertices(rest_vertices.size());
-    // The organ's vertex moves by its file counterpart's displacement.
-    for (std::size_t w = 0; w < rest_vertices.size(); ++w) vertices[w] = rest_vertices[w] + (posed[match[w]] - rest[match[w]]);
-    out.phases.push_back(phase);
-    out.poses.push_back(std::move(vertices));
   }
   return out;
 }

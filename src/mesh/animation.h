@@ -11,30 +11,16 @@
 
 namespace systole::mesh {
 
-struct AnimationPoses {
-  std::vector<double> phases;                      ///< Of each pose in [0, 1): time / the animation's duration.
-  std::vector<std::vector<Eigen::Vector3d>> poses;  ///< Vertices of each pose, in `rest_vertices`' order. unit: the file's
-  double duration_s = 0;                           ///< The animation's length. unit: s
-};
-
-/// Samples the first animation of `file` at `samples` evenly spaced times over its duration.
-/// Poses are returned for the vertices `rest_vertices` (the same file as import_mesh gives it,
-/// or any mesh whose vertices coincide with the file's rest pose): each is matched to the
-/// file's vertex at the same rest position (node transforms applied, within 1e-5 of the
-/// bounding diagonal). A vertex moves by its mesh's morph targets (assimp keeps them as whole
-/// target shapes; the pose is rest + sum of weight x (target - rest), weights interpolated
-/// linearly between keys) and, when the mesh has bones, by linear blend skinning with the
-/// bone nodes' animated transforms (positions and scales linear, rotations slerped).
-/// Throws Error(kNoInput) for a missing file, Error(kDataError) naming the file when it has
-/// no animation or a rest vertex has no counterpart in it.
-AnimationPoses import_animation(const std::filesystem::path& file, const std::vector<Eigen::Vector3d>& rest_vertices,
-                                int samples);
-
 /// The first animation of `file` as a surface of its own (mesh/animated_surface.h): its
 /// vertices as the file holds them (no welding: the animation moves them one by one, node
 /// transforms applied), its triangles, each mesh a part (named as import_mesh names it), and
 /// `samples` poses evenly spaced over one of the `cycles` periods the animation holds: period
-/// `period` (0-based; the whole animation for 1 cycle). Throws as import_animation does.
+/// `period` (0-based; the whole animation for 1 cycle). A vertex moves by its mesh's morph
+/// targets (assimp keeps them as whole target shapes; the pose is rest + sum of weight x
+/// (target - rest), weights interpolated linearly between keys) and, when the mesh has bones,
+/// by linear blend skinning with the bone nodes' animated transforms (positions and scales
+/// linear, rotations slerped). Throws Error(kNoInput) for a missing file, Error(kDataError)
+/// naming the file when it has no animation.
 AnimatedSurface read_animated_file(const std::filesystem::path& file, int samples, int cycles, int period);
 
 }  // namespace systole::mesh

@@ -28,9 +28,7 @@ std::string read_bytes(const std::filesystem::path& file) {
 }
 
 /// A glTF document and its buffers' bytes: a .glb's JSON and BIN chunks, or a .gltf with
-/// its buffers in files beside it or in data: URIs. (tinygltf, which writes our glTF, cannot
-/// read it here: Debian's libdraco, which assimp links, exports a tinygltf of another ABI
-/// whose loader wins at run time.)
+/// its buffers in files beside it or in data: URIs (gltf_read.h says why not tinygltf).
 struct Document {
   Json json;
   std::vector<std::string> buffers;
@@ -167,12 +165,11 @@ Eigen::Matrix4d local_matrix(const Json& n) {
 /// One mesh placed by one node: its vertices once (every primitive sharing them), its
 /// morph displacements and where its weights come from.
 struct Block {
-  int node = 0, mesh = 0, position = -1;
+  int node = 0, position = -1;
   std::size_t first = 0, count = 0;
   Eigen::Matrix4d placement;
   std::vector<std::vector<float>> displacement;  ///< Per morph target, 3 per vertex.
   std::vector<double> weights;                   ///< At rest (the mesh's or node's default).
-  std::vector<Eigen::Vector3d> rest;             ///< The vertices, placed.
 };
 
 /// The weights of a sampler at time t: linear, step, or a cubic spline's values linearly.
@@ -194,12 +191,13 @@ std::vector<double> weights_at(const std::vector<float>& times, const std::vecto
   return w;
 }
 
-/// A block's vertices (placed), morph displacements and default weights from its first primitive.
+/// A block's vertices (placed, onto `rest`), morph displacements and default weights from its
+/// first primitive.
 void read_block(const std::filesystem::path& file, const Document& d, const Json& primitive, const std::vector<double>& defaults,
-                const std::string& name, Block& b) {
+                const std::string& name, Block& b, std::vector<Eigen::Vector3d>& rest) {
   const std::vector<float> p = floats(file, d, b.position, 3);
   b.count = p.size() / 3;
-  for (std::size_t v = 0; v < b.count; ++v) b.rest.push_back((b.placement * Eigen::Vector4d(p[3 * v], p[3 * v + 1], p[3 * v + 2], 1)).head<3>());
+  for (std::size_t v = 0; v < b.count; ++v) rest.push_back((b.placement * Eigen::Vector4d(p[3 * v], p[3 * v + 1], p[3 * v + 2], 1)).head<3>());
   for (const Json& target : primitive.value("targets", Json::array())) {
     b.displacement.push_back(target.contains("POSITION") ? floats(file, d, target.at("POSITION").get<long>(), 3)
                                                          : std::vector<float>(3 * b.count, 0.0f));
@@ -245,10 +243,9 @@ std::vector<Block> collect_blocks(const std::filesystem::path& file, const Docum
       const long position = attributes.at("POSITION").get<long>();
       auto found = block_of_position.find(position);
       if (found == block_of_position.end()) {
-        Block b{static_cast<int>(index), static_cast<int>(mesh_index), static_cast<int>(position), out.rest.size(), 0, global, {}, {}};
-        read_block(file, d, primitive, node.contains("weights") ? numbers(node, "weights") : numbers(mesh, "weights"), name, b);
-        for (std::size_t v = 0; v < b.count; ++v) out.vertex_part.push_back(part);
-        for (const Eigen::Vector3d& p : b.rest) out.rest.push_back(p);
+        Block b{static_cast<int>(index), static_cast<int>(position), out.rest.size(), 0, global, {}, {}};
+        read_block(file, d, primitive, node.contains("weights") ? numbers(node, "weights") : numbers(mesh, "weights"), name, b, out.rest);
+        out.vertex_part.resize(out.rest.size(), part);
         found = block_of_position.emplace(position, blocks.size()).first;
         blocks.push_back(std::move(b));
       }

@@ -1,10 +1,12 @@
 #pragma once
-// glTF/GLB morph-target animation read by hand over nlohmann/json, not by assimp: assimp 5.2 keeps a glTF
-// morph target as the file's displacement (glTF's meaning) where its other formats keep whole
-// shapes, and drops negative morph weights to 0, which every animation `systole export`
-// writes (principal modes, weighted both ways) and many shape-key exports hold. A file whose
-// first animation moves only morph weights is read here, every primitive of a mesh sharing
-// its vertices once; one whose animation moves nodes (skinning) is left to mesh/animation.h.
+// glTF/GLB morph-target animation read by hand over nlohmann/json, not by assimp: assimp
+// 5.2 drops negative morph weights to 0 (the kidney's exported first key [-0.010, -0.004,
+// 0.002, 0] came out as [0, 0, 0.0018, 0.0001]), and every animation `systole export`
+// writes weighs its principal modes both ways, as many shape-key exports do. (tinygltf, which
+// writes our glTF, cannot read it here: Debian's libdraco, linked through assimp, carries
+// another build of it whose loader wins at run time.) A file whose first animation moves only
+// morph weights is read here, every primitive of a mesh sharing its vertices once; one whose
+// animation moves nodes (skinning) is left to mesh/animation.h.
 
 #include <filesystem>
 #include <optional>

@@ -17,71 +17,92 @@ Eigen::VectorXd ridge_solve(const Eigen::MatrixXd& jacobian, const Eigen::Vector
   return normal.ldlt().solve(jacobian.transpose() * rhs);
 }
 
-/// The change of each fitted region's contraction that lets the springs exert the
-/// attachments' force (header).
-Eigen::VectorXd from_forces(const sim::Model& model, const sim::State& state, double h, const std::vector<int>& column_of,
-                            int columns) {
-  const sim::Springs& sp = model.springs;
-  const int n = model.particle_count();
-  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(3 * n, columns);
-  for (int j = 0; j < sp.size(); ++j) {
-    const int a = sp.a[j], b = sp.b[j];
-    const Eigen::Vector3d d = state.x.col(b) - state.x.col(a);
-    const double len = d.norm();
-    if (len < 1e-12) continue;
-    // The spring's force as one XPBD iteration exerts it, lambda / h^2 = -C / (h^2 w + alpha)
-    // (XPBD eq. 18; the damper is a separate velocity pass): below the stiffness 1 / alpha
-    // when the particles are light.
-    const double k = 1.0 / (h * h * (model.inverse_mass[a] + model.inverse_mass[b]) + sp.compliance_m_per_N[j]);
-    const Eigen::Vector3d gradient = (k * sp.rest_m[j] / len) * d;  // k L0 n
-    for (int end : {sp.region_a[j], sp.region_b[j]}) {
-      const int c = end >= 0 ? column_of[end] : -1;
-      if (c < 0) continue;
-      // Contracting the spring pulls b towards a and a towards b (half per end region).
-      if (model.inverse_mass[b] > 0) jacobian.block<3, 1>(3 * b, c) -= 0.5 * gradient;
-      if (model.inverse_mass[a] > 0) jacobian.block<3, 1>(3 * a, c) += 0.5 * gradient;
+/// The two signals' solves at a recorded step, their matrices and the springs they read
+/// built once for the whole recording.
+class SpringFits {
+ public:
+  SpringFits(const sim::Model& model, const std::vector<int>& fitted) : model_(model), fitted_(fitted) {
+    column_of_.assign(model.regions.size(), -1);
+    for (std::size_t c = 0; c < fitted.size(); ++c) column_of_[static_cast<std::size_t>(fitted[c])] = static_cast<int>(c);
+    const sim::Springs& sp = model.springs;
+    for (int j = 0; j < sp.size(); ++j) {  // The springs a fitted region drives.
+      const bool a = sp.region_a[j] >= 0 && column_of_[sp.region_a[j]] >= 0;
+      const bool b = sp.region_b[j] >= 0 && column_of_[sp.region_b[j]] >= 0;
+      if ((a || b) && sp.rest_m[j] > 0) rows_.push_back(j);
     }
+    const auto columns = static_cast<Eigen::Index>(fitted.size());
+    force_jacobian_.resize(3 * model.particle_count(), columns);
+    length_jacobian_.resize(static_cast<Eigen::Index>(rows_.size()), columns);
+    residual_.resize(static_cast<Eigen::Index>(rows_.size()));
   }
-  const Eigen::Matrix3Xd force = state.attachment_lambda / (h * h);
-  return ridge_solve(jacobian, Eigen::Map<const Eigen::VectorXd>(force.data(), 3 * n), 1e-9);
-}
 
-/// The contractions whose driven rest lengths best match the springs' lengths now (header):
-/// two Gauss-Newton steps from the current contractions, derivatives by central differences
-/// of sim::driven_rest_length (fibres make it nonlinear in c).
-Eigen::VectorXd from_lengths(const sim::Model& model, const sim::State& state, const std::vector<int>& fitted,
-                             const std::vector<int>& column_of) {
-  const sim::Springs& sp = model.springs;
-  const int columns = static_cast<int>(fitted.size());
-  std::vector<int> rows;  // The springs a fitted region drives.
-  for (int j = 0; j < sp.size(); ++j) {
-    const bool a = sp.region_a[j] >= 0 && column_of[sp.region_a[j]] >= 0;
-    const bool b = sp.region_b[j] >= 0 && column_of[sp.region_b[j]] >= 0;
-    if ((a || b) && sp.rest_m[j] > 0) rows.push_back(j);
-  }
-  Eigen::VectorXd contraction = state.region_contraction;
-  Eigen::MatrixXd jacobian(static_cast<Eigen::Index>(rows.size()), columns);
-  Eigen::VectorXd residual(static_cast<Eigen::Index>(rows.size()));
-  constexpr double kDelta = 1e-4;
-  for (int iteration = 0; iteration < 2; ++iteration) {
-    jacobian.setZero();
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      const int j = rows[i];
-      const double length = (state.x.col(sp.b[j]) - state.x.col(sp.a[j])).norm();
-      residual[static_cast<Eigen::Index>(i)] = (length - sim::driven_rest_length(sp, j, contraction)) / sp.rest_m[j];
+  /// Whether region r is fitted (has a column).
+  bool fitted(std::size_t r) const { return column_of_[r] >= 0; }
+  int column(std::size_t r) const { return column_of_[r]; }
+
+  /// The change of each fitted region's contraction that lets the springs exert the
+  /// attachments' force (coupling.h).
+  Eigen::VectorXd from_forces(const sim::State& state, double h) {
+    const sim::Springs& sp = model_.springs;
+    force_jacobian_.setZero();
+    for (int j = 0; j < sp.size(); ++j) {
+      const int a = sp.a[j], b = sp.b[j];
+      const Eigen::Vector3d d = state.x.col(b) - state.x.col(a);
+      const double len = d.norm();
+      if (len < 1e-12) continue;
+      // The spring's force as one XPBD iteration exerts it, lambda / h^2 = -C / (h^2 w + alpha)
+      // (XPBD eq. 18; the damper is a separate velocity pass): below the stiffness 1 / alpha
+      // when the particles are light.
+      const double k = 1.0 / (h * h * (model_.inverse_mass[a] + model_.inverse_mass[b]) + sp.compliance_m_per_N[j]);
+      const Eigen::Vector3d gradient = (k * sp.rest_m[j] / len) * d;  // k L0 n
       for (int end : {sp.region_a[j], sp.region_b[j]}) {
-        if (end < 0 || column_of[end] < 0 || jacobian(static_cast<Eigen::Index>(i), column_of[end]) != 0) continue;
-        Eigen::VectorXd up = contraction, down = contraction;
-        up[end] += kDelta, down[end] -= kDelta;
-        jacobian(static_cast<Eigen::Index>(i), column_of[end]) =
-            (sim::driven_rest_length(sp, j, up) - sim::driven_rest_length(sp, j, down)) / (2 * kDelta * sp.rest_m[j]);
+        const int c = end >= 0 ? column_of_[end] : -1;
+        if (c < 0) continue;
+        // Contracting the spring pulls b towards a and a towards b (half per end region).
+        if (model_.inverse_mass[b] > 0) force_jacobian_.block<3, 1>(3 * b, c) -= 0.5 * gradient;
+        if (model_.inverse_mass[a] > 0) force_jacobian_.block<3, 1>(3 * a, c) += 0.5 * gradient;
       }
     }
-    const Eigen::VectorXd step = ridge_solve(jacobian, residual, 1e-6);
-    for (int c = 0; c < columns; ++c) contraction[fitted[c]] += step[c];
+    const Eigen::Matrix3Xd force = state.attachment_lambda / (h * h);
+    return ridge_solve(force_jacobian_, Eigen::Map<const Eigen::VectorXd>(force.data(), force.size()), 1e-9);
   }
-  return contraction;
-}
+
+  /// The contractions whose driven rest lengths best match the springs' lengths now
+  /// (coupling.h): two Gauss-Newton steps from the current contractions, derivatives by
+  /// central differences of sim::driven_rest_length (fibres make it nonlinear in c).
+  Eigen::VectorXd from_lengths(const sim::State& state) {
+    const sim::Springs& sp = model_.springs;
+    Eigen::VectorXd contraction = state.region_contraction;
+    constexpr double kDelta = 1e-4;
+    for (int iteration = 0; iteration < 2; ++iteration) {
+      length_jacobian_.setZero();
+      for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const int j = rows_[i];
+        const auto row = static_cast<Eigen::Index>(i);
+        const double length = (state.x.col(sp.b[j]) - state.x.col(sp.a[j])).norm();
+        residual_[row] = (length - sim::driven_rest_length(sp, j, contraction)) / sp.rest_m[j];
+        for (int end : {sp.region_a[j], sp.region_b[j]}) {
+          if (end < 0 || column_of_[end] < 0 || length_jacobian_(row, column_of_[end]) != 0) continue;
+          Eigen::VectorXd up = contraction, down = contraction;
+          up[end] += kDelta, down[end] -= kDelta;
+          length_jacobian_(row, column_of_[end]) =
+              (sim::driven_rest_length(sp, j, up) - sim::driven_rest_length(sp, j, down)) / (2 * kDelta * sp.rest_m[j]);
+        }
+      }
+      const Eigen::VectorXd step = ridge_solve(length_jacobian_, residual_, 1e-6);
+      for (std::size_t c = 0; c < fitted_.size(); ++c) contraction[fitted_[c]] += step[static_cast<Eigen::Index>(c)];
+    }
+    return contraction;
+  }
+
+ private:
+  const sim::Model& model_;
+  const std::vector<int>& fitted_;
+  std::vector<int> column_of_;  ///< Per region, its column, -1 when not fitted.
+  std::vector<int> rows_;       ///< The springs a fitted region drives.
+  Eigen::MatrixXd force_jacobian_, length_jacobian_;
+  Eigen::VectorXd residual_;
+};
 
 }  // namespace
 
@@ -101,20 +122,19 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
   // The coupled body played alone; the recorder listens after every measured step.
   world::BodyPlayback playback(model, problem.dt_s, &coupling);
   const sim::State& state = playback.state();
-  const int n = model.particle_count(), columns = static_cast<int>(fitted.size());
-  std::vector<int> column_of(model.regions.size(), -1);
-  for (int c = 0; c < columns; ++c) column_of[fitted[c]] = c;
+  const int n = model.particle_count();
+  SpringFits fits(model, fitted);
   const double h = problem.dt_s / model.substeps;
   double force_sum = 0;
   ErrorMeter floor(problem);
   playback.run(problem.settle_steps);
   playback.run(problem.measure_steps, [&](int k) {
     floor.add(k, state.x);
-    const Eigen::VectorXd dc = from_forces(model, state, h, column_of, columns);
-    const Eigen::VectorXd by_length = from_lengths(model, state, fitted, column_of);
+    const Eigen::VectorXd dc = fits.from_forces(state, h);
+    const Eigen::VectorXd by_length = fits.from_lengths(state);
     for (std::size_t r = 0; r < model.regions.size(); ++r) {
       const double now = state.region_contraction[static_cast<Eigen::Index>(r)];
-      rec.contraction[r].push_back(now + (column_of[r] >= 0 ? dc[column_of[r]] : 0.0));
+      rec.contraction[r].push_back(now + (fits.fitted(r) ? dc[fits.column(r)] : 0.0));
       rec.length_contraction[r].push_back(by_length[static_cast<Eigen::Index>(r)]);
     }
     rec.times_s.push_back(state.time_s);

@@ -171,7 +171,6 @@ TargetMotion from_animation(const scene::Organ& organ, const mesh::OrganGeometry
   }
   const double loss = transfer_loss_pct(aligned, target_poses, organ_rest, poses);
   TargetMotion motion(std::move(phases), std::move(poses));
-  motion.transfer_loss_pct = loss;
   std::ostringstream note;
   note.precision(3);
   note << "The target " << file.file << " (" << target.positions.cols() << " vertices, " << file.poses.size()

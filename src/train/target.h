@@ -26,8 +26,6 @@ class TargetMotion {
   /// (train/transfer.h); "" for a target of the organ's own mesh or curves.
   const std::string& transfer_note() const { return transfer_note_; }
   void set_transfer_note(std::string note) { transfer_note_ = std::move(note); }
-  /// The transfer's loss, % of the target's motion (transfer_loss_pct); 0 when there was none. unit: %
-  double transfer_loss_pct = 0;
 
  private:
   std::vector<double> phases_;

@@ -54,46 +54,62 @@ class PointIndex {
   Tree tree_;
 };
 
-/// A surface under a k-d tree of its vertices: the closest point of the surface to a point,
-/// searched among the triangles round its 8 nearest vertices (exact for surfaces that are
-/// not much coarser than the distance to them, which is what alignment and binding ask).
+/// Some of a surface's triangles (those with an area) under a k-d tree of their corners:
+/// the closest point of them to a point, searched among the triangles round its `k` nearest
+/// corners (exact for surfaces that are not much coarser than the distance to them, which is
+/// what alignment and binding ask).
 class SurfaceIndex {
  public:
-  SurfaceIndex(const Eigen::Matrix3Xd& positions, const std::vector<Eigen::Vector3i>& triangles)
-      : positions_(positions), triangles_(triangles), vertices_(positions), incident_(static_cast<std::size_t>(positions.cols())) {
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
-      for (int k = 0; k < 3; ++k) incident_[static_cast<std::size_t>(triangles[t][k])].push_back(static_cast<int>(t));
+  /// Over `subset` of the triangles (their indices), or every triangle when it is null.
+  SurfaceIndex(const Eigen::Matrix3Xd& positions, const std::vector<Eigen::Vector3i>& triangles, std::size_t k,
+               const std::vector<int>* subset = nullptr)
+      : positions_(positions), triangles_(triangles), k_(k) {
+    std::map<int, std::size_t> slot;  // Corner -> its column in the tree.
+    auto add = [&](int t) {
+      const Eigen::Vector3i& c = triangles[static_cast<std::size_t>(t)];
+      if ((positions.col(c[1]) - positions.col(c[0])).cross(positions.col(c[2]) - positions.col(c[0])).norm() <= 0) return;
+      for (int j = 0; j < 3; ++j) {
+        const auto [at, added] = slot.emplace(c[j], slot.size());
+        if (added) incident_.emplace_back();
+        incident_[at->second].push_back(t);
+      }
+    };
+    if (subset) {
+      for (int t : *subset) add(t);
+    } else {
+      for (std::size_t t = 0; t < triangles.size(); ++t) add(static_cast<int>(t));
     }
+    Eigen::Matrix3Xd corners(3, static_cast<Eigen::Index>(slot.size()));
+    for (const auto& [vertex, column] : slot) corners.col(static_cast<Eigen::Index>(column)) = positions.col(vertex);
+    corners_ = std::make_unique<PointIndex>(std::move(corners));
   }
   struct Hit {
-    int triangle = -1;
+    int triangle = -1;  ///< -1: no triangle indexed.
     Eigen::Vector3d bary = Eigen::Vector3d::Zero();
     Eigen::Vector3d point = Eigen::Vector3d::Zero();
     double distance = std::numeric_limits<double>::infinity();
   };
   Hit closest(const Eigen::Vector3d& p) const {
     Hit best;
-    for (std::size_t i : vertices_.nearest(p, 8)) {
-      if (incident_[i].empty()) {  // A vertex of no triangle: the point itself.
-        const double d = (positions_.col(static_cast<Eigen::Index>(i)) - p).norm();
-        if (d < best.distance) best = {-1, Eigen::Vector3d::Zero(), positions_.col(static_cast<Eigen::Index>(i)), d};
-        continue;
-      }
+    if (incident_.empty()) return best;
+    for (std::size_t i : corners_->nearest(p, k_)) {
       for (int t : incident_[i]) {
         const Eigen::Vector3i& c = triangles_[static_cast<std::size_t>(t)];
         const auto cp = sim::contact::closest_on_triangle(p, positions_.col(c[0]), positions_.col(c[1]), positions_.col(c[2]));
         const Eigen::Vector3d q = cp.bary[0] * positions_.col(c[0]) + cp.bary[1] * positions_.col(c[1]) + cp.bary[2] * positions_.col(c[2]);
         const double d = (p - q).norm();
-        if (d < best.distance) best = {t, cp.bary, q, d};
+        if (d < best.distance || (d == best.distance && t < best.triangle)) best = {t, cp.bary, q, d};
       }
     }
     return best;
   }
+
  private:
   const Eigen::Matrix3Xd& positions_;
   const std::vector<Eigen::Vector3i>& triangles_;
-  PointIndex vertices_;
-  std::vector<std::vector<int>> incident_;
+  std::size_t k_;
+  std::vector<std::vector<int>> incident_;  ///< Per indexed corner, its triangles.
+  std::unique_ptr<PointIndex> corners_;
 };
 
 double diagonal(const Eigen::Matrix3Xd& p) { return (p.rowwise().maxCoeff() - p.rowwise().minCoeff()).norm(); }
@@ -219,7 +235,7 @@ void refuse_if_apart(const Alignment& a, const RestSurface& target, const RestSu
 
 Alignment align(const RestSurface& target, const RestSurface& organ, const AlignOptions& options, const std::string& what) {
   const double size = diagonal(organ.positions);
-  const SurfaceIndex organ_index(organ.positions, organ.triangles), target_index(target.positions, target.triangles);
+  const SurfaceIndex organ_index(organ.positions, organ.triangles, 8), target_index(target.positions, target.triangles, 8);
   const Eigen::Matrix3Xd organ_sample = sample(organ.positions), target_sample = sample(target.positions);
   const bool affine = options.mode == AlignOptions::Mode::kAffine;
   auto score = [&](const Fit& f) { return misfit(target_index, target_sample, f, organ_index, organ_sample) / size; };
@@ -284,104 +300,49 @@ Eigen::Matrix3d frame(const Eigen::Matrix3Xd& p, const Eigen::Vector3i& t) {
   return f;
 }
 
-/// Per vertex its triangles, and per triangle whether it has an area (a closest point on it
-/// has a frame).
-void incidence(const RestSurface& s, std::vector<std::vector<int>>& incident, std::vector<bool>& usable) {
-  incident.assign(static_cast<std::size_t>(s.positions.cols()), {});
-  usable.assign(s.triangles.size(), false);
-  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-    const Eigen::Vector3i& c = s.triangles[t];
-    usable[t] = (s.positions.col(c[1]) - s.positions.col(c[0])).cross(s.positions.col(c[2]) - s.positions.col(c[0])).norm() > 0;
-    for (int k = 0; k < 3; ++k) incident[static_cast<std::size_t>(c[k])].push_back(static_cast<int>(t));
-  }
-}
-
-/// The closest point to p of `from`'s usable triangles round the 16 nearest of `vertices`
-/// (under `index`) that `allowed` accepts: its triangle (-1: none), weights and distance.
-template <class Allowed>
-std::tuple<int, Eigen::Vector3d, double> nearest_on(const RestSurface& from, const Eigen::Vector3d& p, const PointIndex& index,
-                                                    const std::vector<Eigen::Index>& vertices,
-                                                    const std::vector<std::vector<int>>& incident, const std::vector<bool>& usable,
-                                                    const Allowed& allowed) {
-  double best = std::numeric_limits<double>::infinity();
-  int best_triangle = -1;
-  Eigen::Vector3d best_bary = Eigen::Vector3d::Zero();
-  for (std::size_t i : index.nearest(p, 16)) {
-    for (int t : incident[static_cast<std::size_t>(vertices[i])]) {
-      if (!usable[static_cast<std::size_t>(t)] || !allowed(t)) continue;
-      const Eigen::Vector3i& c = from.triangles[static_cast<std::size_t>(t)];
-      const auto cp = sim::contact::closest_on_triangle(p, from.positions.col(c[0]), from.positions.col(c[1]), from.positions.col(c[2]));
-      const Eigen::Vector3d q = cp.bary[0] * from.positions.col(c[0]) + cp.bary[1] * from.positions.col(c[1]) + cp.bary[2] * from.positions.col(c[2]);
-      const double d = (p - q).norm();
-      if (d < best || (d == best && t < best_triangle)) best = d, best_triangle = t, best_bary = cp.bary;
-    }
-  }
-  return {best_triangle, best_bary, best};
-}
-
 }  // namespace
 
 SurfaceBinding::SurfaceBinding(const RestSurface& from, const RestSurface& to) {
-  const Eigen::Index n = to.positions.cols();
-  // Per part of `from` (and one for all): its vertices under a k-d tree, and each vertex's triangles.
-  std::map<std::string, std::vector<Eigen::Index>> part_vertices;
-  part_vertices[""];  // Every vertex.
-  for (Eigen::Index v = 0; v < from.positions.cols(); ++v) {
-    part_vertices[""].push_back(v);
-    if (!from.vertex_part_name.empty() && !from.vertex_part_name[static_cast<std::size_t>(v)].empty())
-      part_vertices[from.vertex_part_name[static_cast<std::size_t>(v)]].push_back(v);
-  }
-  std::vector<std::vector<int>> incident;
-  std::vector<bool> usable;
-  incidence(from, incident, usable);
-  struct Part {
-    std::vector<Eigen::Index> vertices;
-    std::unique_ptr<PointIndex> index;
-  };
-  std::map<std::string, Part> parts;
-  for (auto& [name, vertices] : part_vertices) {
-    Eigen::Matrix3Xd points(3, static_cast<Eigen::Index>(vertices.size()));
-    for (std::size_t i = 0; i < vertices.size(); ++i) points.col(static_cast<Eigen::Index>(i)) = from.positions.col(vertices[i]);
-    parts[name] = Part{vertices, std::make_unique<PointIndex>(std::move(points))};
-  }
-  auto part_of_triangle = [&](int t) {
-    return from.vertex_part_name.empty() ? std::string() : from.vertex_part_name[static_cast<std::size_t>(from.triangles[static_cast<std::size_t>(t)][0])];
-  };
-  // Which of `from`'s parts each of `to`'s part names binds to ("" every part).
-  std::map<std::string, std::string> part_for;
-  triangle_.resize(static_cast<std::size_t>(n));
-  corners_.resize(static_cast<std::size_t>(n));
-  bary_.resize(static_cast<std::size_t>(n));
-  offset_.resize(static_cast<std::size_t>(n));
-  for (Eigen::Index v = 0; v < n; ++v) {
-    const std::string name = to.vertex_part_name.empty() ? std::string() : to.vertex_part_name[static_cast<std::size_t>(v)];
-    auto found = part_for.find(name);
-    if (found == part_for.end()) {
-      std::string match;
-      for (const auto& [candidate, unused] : parts) {
-        if (!name.empty() && !candidate.empty() && same_part(candidate, name)) match = candidate;
-      }
-      found = part_for.emplace(name, match).first;
+  // Per part of `from` (a triangle's part is its first corner's) and "" for all: its surface.
+  std::map<std::string, std::vector<int>> part_triangles;
+  if (!from.vertex_part_name.empty()) {
+    for (std::size_t t = 0; t < from.triangles.size(); ++t) {
+      const std::string& name = from.vertex_part_name[static_cast<std::size_t>(from.triangles[t][0])];
+      if (!name.empty()) part_triangles[name].push_back(static_cast<int>(t));
     }
-    const Part& part = parts.at(found->second);
-    const Eigen::Vector3d p = to.positions.col(v);
-    const auto [best_triangle, best_bary, best] = nearest_on(from, p, *part.index, part.vertices, incident, usable, [&](int t) {
-      return found->second.empty() || part_of_triangle(t) == found->second;
-    });
-    if (best_triangle < 0) throw Error(ExitCode::kDataError, "the target's surface has no triangle with an area near vertex " + std::to_string(v));
-    const Eigen::Vector3i& c = from.triangles[static_cast<std::size_t>(best_triangle)];
-    const Eigen::Vector3d q = best_bary[0] * from.positions.col(c[0]) + best_bary[1] * from.positions.col(c[1]) + best_bary[2] * from.positions.col(c[2]);
-    triangle_[static_cast<std::size_t>(v)] = best_triangle;
-    corners_[static_cast<std::size_t>(v)] = c;
-    bary_[static_cast<std::size_t>(v)] = best_bary;
-    offset_[static_cast<std::size_t>(v)] = frame(from.positions, c).transpose() * (p - q);
-    largest_gap_ = std::max(largest_gap_, best);
+  }
+  std::map<std::string, std::unique_ptr<SurfaceIndex>> parts;
+  parts[""] = std::make_unique<SurfaceIndex>(from.positions, from.triangles, 16);
+  for (const auto& [name, triangles] : part_triangles) parts[name] = std::make_unique<SurfaceIndex>(from.positions, from.triangles, 16, &triangles);
+  // Which of `from`'s parts each of `to`'s part names binds to ("" every part).
+  std::map<std::string, const SurfaceIndex*> part_for;
+  auto surface_for = [&](const std::string& name) {
+    auto found = part_for.find(name);
+    if (found != part_for.end()) return found->second;
+    const SurfaceIndex* match = parts.at("").get();
+    for (const auto& [candidate, index] : part_triangles) {
+      if (!name.empty() && same_part(candidate, name)) match = parts.at(candidate).get();
+    }
+    return part_for.emplace(name, match).first->second;
+  };
+  const auto n = static_cast<std::size_t>(to.positions.cols());
+  corners_.resize(n);
+  bary_.resize(n);
+  offset_.resize(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const Eigen::Vector3d p = to.positions.col(static_cast<Eigen::Index>(v));
+    const auto hit = surface_for(to.vertex_part_name.empty() ? std::string() : to.vertex_part_name[v])->closest(p);
+    if (hit.triangle < 0) throw Error(ExitCode::kDataError, "the target's surface has no triangle with an area near vertex " + std::to_string(v));
+    corners_[v] = from.triangles[static_cast<std::size_t>(hit.triangle)];
+    bary_[v] = hit.bary;
+    offset_[v] = frame(from.positions, corners_[v]).transpose() * (p - hit.point);
+    largest_gap_ = std::max(largest_gap_, hit.distance);
   }
 }
 
 void SurfaceBinding::apply(const Eigen::Matrix3Xd& from_pose, Eigen::Matrix3Xd& out) const {
-  out.resize(3, static_cast<Eigen::Index>(triangle_.size()));
-  for (std::size_t v = 0; v < triangle_.size(); ++v) {
+  out.resize(3, static_cast<Eigen::Index>(corners_.size()));
+  for (std::size_t v = 0; v < corners_.size(); ++v) {
     const Eigen::Vector3i& c = corners_[v];
     Eigen::Vector3d p = bary_[v][0] * from_pose.col(c[0]) + bary_[v][1] * from_pose.col(c[1]) + bary_[v][2] * from_pose.col(c[2]);
     if (!offset_[v].isZero(0)) p += frame(from_pose, c) * offset_[v];

@@ -76,13 +76,11 @@ class SurfaceBinding {
   SurfaceBinding(const RestSurface& from, const RestSurface& to);
   /// `to`'s vertices for `from` posed at `from_pose` (3 x from's vertices). unit: m
   void apply(const Eigen::Matrix3Xd& from_pose, Eigen::Matrix3Xd& out) const;
-  int vertex_count() const { return static_cast<int>(triangle_.size()); }
   /// The largest distance of a bound vertex from its point at rest. unit: as the positions
   double largest_gap() const { return largest_gap_; }
 
  private:
   std::vector<Eigen::Vector3i> corners_;  ///< The bound triangle's corners, per vertex.
-  std::vector<int> triangle_;
   std::vector<Eigen::Vector3d> bary_, offset_;  ///< Barycentric weights; offset in the triangle's frame.
   double largest_gap_ = 0;
 };

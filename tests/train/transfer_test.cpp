@@ -157,7 +157,6 @@ TEST(Transfer, AVertexBindsToItsOwnNamedPartBeforeANearerOne) {
   binding.apply(moved, out);
   EXPECT_NEAR((out - organ.positions).rowwise().mean()(1), 0.01, 1e-12);
   organ.vertex_part_name.assign(static_cast<std::size_t>(n), "");  // Unnamed: the nearest, the right ball.
-  binding.apply(moved, out);
   const SurfaceBinding unnamed(two, organ);
   unnamed.apply(moved, out);
   EXPECT_NEAR((out - organ.positions).rowwise().mean()(1), 0.0, 1e-12);
