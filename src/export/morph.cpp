@@ -99,6 +99,25 @@ MorphAnimation frames_morph(const OrganTrack& organ, const Recording& rec) {
   return m;
 }
 
+namespace {
+
+/// The compact loop's start: the organ's rest as the base, as a shape key's basis is, and the
+/// loop's mean shape as a first target held at weight 1 over every key. A reader (a viewer, an
+/// animator's tool, `systole tune`) then finds the organ's own rest in the file, not a pose.
+MorphAnimation mean_over_rest(const OrganTrack& organ, const Eigen::VectorXd& mean, const Eigen::Matrix3Xf& mean_normal,
+                              int frames) {
+  MorphAnimation m;
+  m.base_position_m = organ.rest_m.cast<float>();
+  m.base_normal = vertex_normals(organ, organ.rest_m);
+  m.position_delta_m.push_back((mean.reshaped(3, organ.rest_m.cols()) - m.base_position_m.cast<double>()).cast<float>());
+  m.normal_delta.push_back(mean_normal - m.base_normal);
+  m.target_names.push_back("mean");
+  m.weights = Eigen::MatrixXf::Ones(frames + 1, 1);
+  return m;
+}
+
+}  // namespace
+
 MorphAnimation compact_morph(const OrganTrack& organ, const Recording& rec, const CompactOptions& options) {
   if (!rec.loop) {
     throw Error(ExitCode::kUsage, "the compact encoding needs the clip as a loop of whole cycles (output.loop)");
@@ -128,10 +147,7 @@ MorphAnimation compact_morph(const OrganTrack& organ, const Recording& rec, cons
   const int available = static_cast<int>(v.size());
   MorphAnimation best;
   for (int k = std::min(options.min_targets, available); k <= std::min(options.max_targets, available); ++k) {
-    MorphAnimation m;
-    m.base_position_m = mean.reshaped(3, organ.rest_m.cols()).cast<float>();
-    m.base_normal = base_normal;
-    m.weights.resize(frames + 1, k);
+    MorphAnimation m = mean_over_rest(organ, mean, base_normal, frames);
     for (int c = 0; c < k; ++c) {
       const double s = std::sqrt(lambda[static_cast<std::size_t>(c)]);
       const Eigen::VectorXd component = d * v[static_cast<std::size_t>(c)] / s;  // unit length
@@ -140,8 +156,9 @@ MorphAnimation compact_morph(const OrganTrack& organ, const Recording& rec, cons
       const Eigen::VectorXd normal_fit = normal_change * curve / curve.squaredNorm();
       m.normal_delta.push_back(normal_fit.reshaped(3, organ.rest_m.cols()).cast<float>());
       m.target_names.push_back("mode_" + std::to_string(c + 1));
-      for (int f = 0; f < frames; ++f) m.weights(f, c) = static_cast<float>(curve(f));
-      m.weights(frames, c) = m.weights(0, c);  // The loop closes on its first shape, exactly.
+      m.weights.conservativeResize(Eigen::NoChange, c + 2);
+      for (int f = 0; f < frames; ++f) m.weights(f, c + 1) = static_cast<float>(curve(f));
+      m.weights(frames, c + 1) = m.weights(0, c + 1);  // The loop closes on its first shape, exactly.
     }
     for (int key = 0; key <= frames; ++key) m.key_times_s.push_back(static_cast<float>(key / rec.fps));
     m.motion_m = sim::rms_motion_m(organ.frames_m);
@@ -152,9 +169,9 @@ MorphAnimation compact_morph(const OrganTrack& organ, const Recording& rec, cons
   if (available < options.min_targets) return best;  // Fewer distinct shapes than targets: exact already.
   char text[256];
   std::snprintf(text, sizeof text,
-                "%s: %d morph targets reproduce the loop within %.2f %% of the motion, over the budget of %.2f %%; "
+                "%s: %d morph targets of motion (beside the mean shape's) reproduce the loop within %.2f %% of the motion, over the budget of %.2f %%; "
                 "raise --max-error or export every frame (--encoding frames)",
-                organ.name.c_str(), best.target_count(), best.error_pct, options.max_error_pct);
+                organ.name.c_str(), best.target_count() - 1, best.error_pct, options.max_error_pct);
   throw Error(ExitCode::kDataError, text);
 }
 

@@ -4,8 +4,9 @@
 //
 // Two encodings. `frames`: every frame is a target (delta = frame - rest), its weight 1 at
 // its own key and 0 elsewhere, so a viewer reproduces each simulated frame to float32
-// rounding; size grows with the clip. `compact`: the displacement from the mean shape over
-// whole cycles, compressed into its principal components (PCA of the frames by the
+// rounding; size grows with the clip. `compact`: the rest as base (a shape key's basis), the
+// mean shape over whole cycles as a target held at 1, and the displacement from the mean
+// compressed into its principal components (PCA of the frames by the
 // snapshot method: eigenvectors of the frames' Gram matrix, Sirovich 1987), the fewest
 // targets from min_targets to max_targets whose float32 reconstruction is within the error
 // budget, measured as sim/motion_error.h measures error: RMS distance as a share of the RMS
@@ -27,7 +28,7 @@ namespace systole::exporter {
 enum class Encoding { kFrames, kCompact };
 
 struct MorphAnimation {
-  Eigen::Matrix3Xf base_position_m;  ///< The mesh without morphing: rest (frames) or mean shape (compact). unit: m
+  Eigen::Matrix3Xf base_position_m;  ///< The mesh without morphing: the organ's rest. unit: m
   Eigen::Matrix3Xf base_normal;      ///< Unit vertex normals of the base. unit: 1
   std::vector<Eigen::Matrix3Xf> position_delta_m;  ///< Per target. unit: m
   std::vector<Eigen::Matrix3Xf> normal_delta;      ///< Per target. unit: 1
@@ -42,7 +43,7 @@ struct MorphAnimation {
 
 struct CompactOptions {
   double max_error_pct = 2;  ///< unit: % of the motion (RMS)
-  int min_targets = 4;
+  int min_targets = 4;   ///< Principal components; the mean shape's target comes on top.
   int max_targets = 16;
 };
 

@@ -15,6 +15,10 @@
 
 namespace systole::mesh {
 
+/// Poses sampled over one period from an animation whose keys are not evenly spaced (an
+/// animator's few keys, or a skeleton's): enough for the three harmonics training fits.
+inline constexpr int kDefaultSamples = 32;
+
 struct AnimatedSurface {
   std::vector<Eigen::Vector3d> rest;          ///< The file's rest vertices. unit: the file's
   std::vector<Eigen::Vector3i> triangles;     ///< Over `rest`, outward facing where the file says so.

@@ -203,6 +203,7 @@ AnimatedSurface read_animated_file(const std::filesystem::path& file, int sample
   }
   if (out.parts.empty()) out.vertex_part.clear();
   const double span = out.duration / std::max(1, cycles), start = span * std::clamp(period, 0, std::max(1, cycles) - 1);
+  if (samples == 0) samples = kDefaultSamples;
   for (int i = 0; i < samples; ++i) {
     const double t = start + span * double(i) / double(samples);
     out.times.push_back(t);

@@ -14,7 +14,7 @@ namespace systole::mesh {
 /// The first animation of `file` as a surface of its own (mesh/animated_surface.h): its
 /// vertices as the file holds them (no welding: the animation moves them one by one, node
 /// transforms applied), its triangles, each mesh a part (named as import_mesh names it), and
-/// `samples` poses evenly spaced over one of the `cycles` periods the animation holds: period
+/// `samples` poses (0: kDefaultSamples) evenly spaced over one of the `cycles` periods the animation holds: period
 /// `period` (0-based; the whole animation for 1 cycle). A vertex moves by its mesh's morph
 /// targets (assimp keeps them as whole target shapes; the pose is rest + sum of weight x
 /// (target - rest), weights interpolated linearly between keys) and, when the mesh has bones,

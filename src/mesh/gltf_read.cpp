@@ -266,8 +266,30 @@ std::vector<Block> collect_blocks(const std::filesystem::path& file, const Docum
   return blocks;
 }
 
+/// The keys a weights track holds over [start, start + span), when every track's keys there
+/// are evenly spaced and alike (a sampled clip, as `systole export` and baked exports write):
+/// sampling at them reads the file's own shapes, not blends between them. Else kDefaultSamples.
+template <class Tracks>
+int even_key_count(const Tracks& tracks, double start, double span) {
+  const double tolerance = 1e-4 * span;
+  int count = 0;
+  for (const auto& [node, track] : tracks) {
+    std::vector<float> in;
+    for (float t : track.times) {
+      if (t >= start - tolerance && t < start + span - tolerance) in.push_back(t);
+    }
+    const int n = static_cast<int>(in.size());
+    if (n < 4 || (count != 0 && n != count) || std::abs(in.front() - start) > tolerance) return kDefaultSamples;
+    for (int i = 1; i < n; ++i) {
+      if (std::abs(double(in[static_cast<std::size_t>(i)]) - (start + span * i / n)) > tolerance) return kDefaultSamples;
+    }
+    count = n;
+  }
+  return count > 0 ? count : kDefaultSamples;
+}
+
 /// `samples` poses of the blocks over period `period` of the `cycles` the animation holds,
-/// into `out` (its duration too).
+/// into `out` (its duration too); 0 samples: at its keys where they are even (even_key_count).
 void sample_poses(const std::filesystem::path& file, const Document& d, const Json& animation, const std::vector<Block>& blocks,
                   int samples, int cycles, int period, AnimatedSurface& out) {
   const Json channels = animation.value("channels", Json::array()), samplers = animation.value("samplers", Json::array());
@@ -288,6 +310,7 @@ void sample_poses(const std::filesystem::path& file, const Document& d, const Js
   }
   if (!(out.duration > 0)) fail(file, "the animation has no duration");
   const double span = out.duration / std::max(1, cycles), start = span * std::clamp(period, 0, std::max(1, cycles) - 1);
+  if (samples == 0) samples = even_key_count(track_of_node, start, span);
   for (int i = 0; i < samples; ++i) {
     const double t = start + span * double(i) / double(samples);
     std::vector<Eigen::Vector3d> pose = out.rest;

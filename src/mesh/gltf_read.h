@@ -17,7 +17,8 @@ namespace systole::mesh {
 
 /// The first animation of a .gltf/.glb file, when it animates morph weights only: vertices
 /// placed by their nodes' (static) transforms, each mesh a part (its name, else its node's),
-/// and `samples` poses evenly over period `period` of the `cycles` it holds, a pose being
+/// and `samples` poses evenly over period `period` of the `cycles` it holds (0: at its own keys
+/// where they are evenly spaced, else kDefaultSamples), a pose being
 /// rest + sum of weight x displacement (weights interpolated as the sampler says: linear,
 /// step, or a cubic spline's values). nullopt when the animation moves nodes or the file has
 /// no morph targets. Throws Error(kDataError) naming the file when it cannot be read, has no

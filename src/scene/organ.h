@@ -168,7 +168,7 @@ struct Target {
   std::vector<TargetFrame> frames;     ///< A key-frame mesh sequence over one period...
   std::vector<TargetCurve> curves;     ///< ...or per-region size curves...
   std::string animation;               ///< ...or an animated file of any mesh (glTF/GLB..., PC2/MDD + OBJ, a .pvd series); resolved by load().
-  int animation_samples = 32;          ///< Poses sampled from the animation over one period.
+  int animation_samples = 0;           ///< Poses sampled from the animation over one period; 0: its own keys where even (glTF), else 32.
   int cycles = 1;                      ///< Periods the animation holds; the one after `settle` (or its last) is the target.
   int piece = -1;                      ///< A ParaView series' piece (one per organ); -1: its only one.
   TargetAlign align;                   ///< How its rest surface is laid on the organ's.

@@ -259,26 +259,26 @@ Alignment align(const RestSurface& target, const RestSurface& organ, const Align
     const Fit by_landmarks{m.topLeftCorner<3, 3>(), m.topRightCorner<3, 1>()};
     starts.push_back({by_landmarks, score(by_landmarks), "the landmarks"});
   }
-  // Close already where its file puts it (the organ's own animation, or one made on its
-  // mesh): kept there. The rest shape of such a target may differ from the organ's (a clip's
-  // pose, a kidney sagged on its pedicle) and an alignment would move that real difference
-  // away as if it were a misplacement.
+  // Starts for closest points: the above, and the principal axes matched.
   std::vector<Tried> tried;
+  for (const Fit& f : axes_pairings(target.positions, organ.positions)) starts.push_back({f, score(f), "principal axes"});
   for (const Tried& s : starts) {
-    if (s.misfit < kPlacedClose && s.how.rfind("as ", 0) == 0) tried.push_back(s);
+    const Fit f = closest_points(target_index, target_sample, organ_index, organ_sample, s.fit, affine, size);
+    tried.push_back({f, score(f), s.how + " + closest points (" + (affine ? "affine" : "rigid and scale") + ")"});
   }
-  if (tried.empty()) {
-    // Starts for closest points: the above, and the principal axes matched.
-    for (const Fit& f : axes_pairings(target.positions, organ.positions)) starts.push_back({f, score(f), "principal axes"});
-    for (const Tried& s : starts) {
-      const Fit f = closest_points(target_index, target_sample, organ_index, organ_sample, s.fit, affine, size);
-      tried.push_back({f, score(f), s.how + " + closest points (" + (affine ? "affine" : "rigid and scale") + ")"});
-    }
+  const Tried& moved = *std::min_element(tried.begin(), tried.end(), [](const Tried& a, const Tried& b) { return a.misfit < b.misfit; });
+  // Where its file puts it, a target is kept unless moving it explains most of its misfit:
+  // its rest shape may differ from the organ's for real (a clip's mean pose, a kidney sagged
+  // on its pedicle), and an alignment would move that real difference away as if it were a
+  // misplacement. A misplaced file (other origin, other units) is far off and moves close.
+  const Tried* best = &moved;
+  for (const Tried& s : starts) {
+    const bool kept = s.how.rfind("as ", 0) == 0 && s.misfit < std::max(kPlacedClose, kKeptUnlessMovedCloser * moved.misfit);
+    if (kept && (best == &moved || s.misfit < best->misfit)) best = &s;
   }
-  const Tried& best = *std::min_element(tried.begin(), tried.end(), [](const Tried& a, const Tried& b) { return a.misfit < b.misfit; });
-  Alignment out{best.fit.linear, best.fit.offset, best.misfit, 1.0, best.how};
+  Alignment out{best->fit.linear, best->fit.offset, best->misfit, 1.0, best->how};
   const double placed_scale = std::cbrt(std::abs(options.placed_linear.determinant()));
-  out.scale_vs_placed = std::cbrt(std::abs(best.fit.linear.determinant())) / std::max(1e-300, placed_scale);
+  out.scale_vs_placed = std::cbrt(std::abs(best->fit.linear.determinant())) / std::max(1e-300, placed_scale);
   refuse_if_apart(out, target, organ, what);
   return out;
 }

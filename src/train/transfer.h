@@ -33,6 +33,11 @@ inline constexpr double kMaxMisfit = 0.05;
 /// organ's bounding diagonal.
 inline constexpr double kPlacedClose = 0.005;
 
+/// Farther than kPlacedClose, a target is still kept where its file puts it unless aligning
+/// it brings it more than this many times closer: moving explains little of its misfit, the
+/// rest is shape (a clip's mean pose is not the organ's rest).
+inline constexpr double kKeptUnlessMovedCloser = 2.0;
+
 /// A surface at rest: vertices (3 x n) and triangles, with optional part names per vertex.
 struct RestSurface {
   Eigen::Matrix3Xd positions;

@@ -141,8 +141,11 @@ TEST(Glb, TheCompactLoopIsWithinItsBudgetAndCloses) {
     exporter::CompactOptions options;
     options.max_error_pct = budget;
     const auto morph = exporter::compact_morph(rec.organs[0], rec, options);
-    EXPECT_GE(morph.target_count(), 4);
-    EXPECT_LE(morph.target_count(), 16);
+    // 4-16 principal components and the mean shape's target, held at 1 over the rest (the base).
+    EXPECT_GE(morph.target_count(), 5);
+    EXPECT_LE(morph.target_count(), 17);
+    EXPECT_EQ(morph.base_position_m, rec.organs[0].rest_m.cast<float>()) << "the organ's rest is the file's base";
+    EXPECT_TRUE((morph.weights.col(0).array() == 1.0f).all()) << "the mean shape at every key";
     const auto shapes = shapes_from_file(parse_glb(exporter::gltf_bytes(rec, {morph}, true)));
     ASSERT_EQ(shapes.size(), rec.organs[0].frames_m.size() + 1) << "a closing key after the last frame";
     sim::Trajectory frames(shapes.begin(), shapes.end() - 1);

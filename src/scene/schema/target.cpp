@@ -119,7 +119,8 @@ ValueSpec<Target> target_spec() {
                 "and/or skinning), a PC2 or MDD point cache with the OBJ of the same name beside it, or a ParaView series "
                 "(.pvd). It is aligned to the organ and its motion transferred onto the organ's surface."),
           field("samples", whole<int>(4, 1024), &Target::animation_samples,
-                "Poses sampled evenly from the animation over one period."),
+                "Poses sampled evenly from the animation over one period. Unset: a glTF's own keys where they are evenly "
+                "spaced (a sampled clip, as `systole export` writes), else 32."),
           field("cycles", whole<int>(1, 10000), &Target::cycles,
                 "Periods the animation holds (a clip of many beats, as `systole export --encoding frames` writes one): "
                 "the one at the time the error is measured (after `settle`), or its last, is the target."),
