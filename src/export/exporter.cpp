@@ -37,6 +37,10 @@ std::string megabytes(const fs::path& file) {
   return text;
 }
 
+/// Below a nanometre of RMS motion an organ is still: what moves is rounding, and a share of it
+/// would be a figure about nothing.
+constexpr double kStill_m = 1e-9;
+
 std::string morph_report(const Recording& rec, const std::vector<MorphAnimation>& morphs, const ExportOptions& options) {
   std::string text;
   char line[256];
@@ -50,6 +54,12 @@ std::string morph_report(const Recording& rec, const std::vector<MorphAnimation>
   }
   text += line;
   for (std::size_t o = 0; o < rec.organs.size(); ++o) {
+    if (morphs[o].motion_m < kStill_m) {  // A share of no motion is no figure: say the organ is still.
+      std::snprintf(line, sizeof line, "\n  %s: %d morph targets, still (no motion to reproduce)",
+                    rec.organs[o].name.c_str(), morphs[o].target_count());
+      text += line;
+      continue;
+    }
     std::snprintf(line, sizeof line, "\n  %s: %d morph targets, error %.3g %% of the motion (RMS %.4g mm of %.4g mm)",
                   rec.organs[o].name.c_str(), morphs[o].target_count(), morphs[o].error_pct,
                   morphs[o].error_pct / 100 * morphs[o].motion_m * 1e3, morphs[o].motion_m * 1e3);

@@ -1,7 +1,7 @@
 // ctest-labels: slow-under-sanitizers
 // `systole export` end to end: the frames encoding holds the simulated positions (as a bake
 // stores them at full precision) to float32 rounding, the compact loop reports its error
-// within the budget, a scene that cannot loop is refused with the reason, and a failed
+// within the budget, a still organ is called still, a scene that cannot loop is refused with the reason, and a failed
 // export leaves no file behind.
 
 #include <gtest/gtest.h>
@@ -97,6 +97,15 @@ TEST(ExportCommand, TheCompactLoopReportsItsErrorWithinTheBudget) {
   const auto model = load_glb(dir / "h.glb");
   ASSERT_EQ(model.animations.size(), 1u);
   EXPECT_EQ(listing(dir), std::vector<std::string>{"h.glb"}) << "no lock or temporary left";
+}
+
+TEST(ExportCommand, AStillOrganIsReportedStillNotAsAShareOfNoMotion) {
+  const auto dir = scratch("export_still");
+  const auto r = run(systole() + " export " + source("scenes/liver.yaml") + kShort +
+                     "-D 'interactions=[]' --encoding frames -o " + (dir / "l.glb").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("liver: 12 morph targets, still (no motion to reproduce)"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("% of the motion"), std::string::npos) << r.output;
 }
 
 /// The numbers in the page's camera, in order: position, target, up, fov_deg.
