@@ -45,6 +45,33 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   out.commit();
 }
 
+// The free parameters, fitted and tuned (or why there is no tuned column).
+std::string parameter_table(const OrganTuning& t) {
+  if (t.kept_written) {
+    return "\nThe search ended farther from the target than the drives as written, so the tuned scene keeps "
+           "those; the table above gives them as tuned.\n\n";
+  }
+  std::ostringstream o;
+  o << "\nTuned parameters:\n\n| parameter | fitted | tuned |\n|---|---|---|\n";
+  for (const Parameter& p : t.parameters) {
+    auto value = [&](const std::vector<scene::Region>& regions) {
+      const scene::Region& reg = regions[p.region];
+      switch (p.kind) {
+        case Parameter::Kind::kAmplitude: return reg.drive.amplitude;
+        case Parameter::Kind::kHarmonicAmplitude: return reg.drive.harmonics[p.harmonic].amplitude;
+        case Parameter::Kind::kHarmonicPhase: return reg.drive.harmonics[p.harmonic].phase_rad;
+        case Parameter::Kind::kDelay: return reg.drive.delay_s;
+        case Parameter::Kind::kLogStiffness: return reg.stiffness_scale;
+      }
+      return 0.0;
+    };
+    const bool stiffness = p.kind == Parameter::Kind::kLogStiffness;
+    o << "| " << p.name << (stiffness ? " (scale)" : "") << " | " << fixed(value(t.fitted), 4) << " | " << fixed(value(t.regions), 4) << " |\n";
+  }
+  o << "\n";
+  return o.str();
+}
+
 }  // namespace
 
 std::string report_markdown(const std::string& scene_path, const std::vector<OrganTuning>& tunings) {
@@ -84,23 +111,7 @@ std::string report_markdown(const std::string& scene_path, const std::vector<Org
         << fixed(t.before.regions[r].phase_deg, 1) << " | " << fixed(t.after.regions[r].phase_deg, 1) << " | ![" << region.name << "]("
         << plot_name(t, region) << ") |\n";
     }
-    o << "\nTuned parameters:\n\n| parameter | fitted | tuned |\n|---|---|---|\n";
-    for (const Parameter& p : t.parameters) {
-      auto value = [&](const std::vector<scene::Region>& regions) {
-        const scene::Region& reg = regions[p.region];
-        switch (p.kind) {
-          case Parameter::Kind::kAmplitude: return reg.drive.amplitude;
-          case Parameter::Kind::kHarmonicAmplitude: return reg.drive.harmonics[p.harmonic].amplitude;
-          case Parameter::Kind::kHarmonicPhase: return reg.drive.harmonics[p.harmonic].phase_rad;
-          case Parameter::Kind::kDelay: return reg.drive.delay_s;
-          case Parameter::Kind::kLogStiffness: return reg.stiffness_scale;
-        }
-        return 0.0;
-      };
-      const bool stiffness = p.kind == Parameter::Kind::kLogStiffness;
-      o << "| " << p.name << (stiffness ? " (scale)" : "") << " | " << fixed(value(t.fitted), 4) << " | " << fixed(value(t.regions), 4) << " |\n";
-    }
-    o << "\n";
+    o << parameter_table(t);
   }
   return o.str();
 }

@@ -242,6 +242,16 @@ CmaesResult search(const Problem& problem, const scene::Target& t, const std::ve
   });
 }
 
+// Tuning never hands back drives that play worse than the scene's own: when the search ends
+// farther from the target than the drives as written, those are what TUNED.yaml keeps.
+void keep_written_if_closer(const scene::Organ& organ, OrganTuning& out, const std::function<void(const std::string&)>& log) {
+  if (out.written.diverged || !(out.written.rms_pct_of_motion < out.after.rms_pct_of_motion)) return;
+  log("the search ended at " + format_error(out.after) + ", farther than the drives as written; they are kept");
+  out.kept_written = true;
+  out.regions = organ.regions;
+  out.after = out.written;
+}
+
 }  // namespace
 
 OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const TuneSettings& settings) {
@@ -293,6 +303,7 @@ OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const
   const CmaesResult best = search(problem, t, start, out.parameters, settings, log);
   out.regions = decode(start, out.parameters, best.best_x);
   out.after = play(problem, with_regions(problem.model, out.regions));
+  keep_written_if_closer(organ, out, log);
   out.generations = best.generations;
   out.evaluations = best.evaluations + 4;  // With the written, two fitted and final playbacks.
   out.stop_reason = best.stop_reason;

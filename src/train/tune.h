@@ -43,6 +43,7 @@ struct OrganTuning {
   PlaybackError floor;                  ///< The body tied to the target (train/coupling.h): the best it does.
   PlaybackError fitted_from_forces, fitted_from_lengths;  ///< The two fits; `before` is the closer.
   std::string start_from;               ///< "forces" or "lengths": the fit the search started from.
+  bool kept_written = false;            ///< The search ended farther than the drives as written: `regions` are those.
   double coupling_N_per_m = 0;          ///< The target's coupling (what the floor was measured at). unit: N/m
   std::string transfer;                 ///< How the target was laid on the organ and what that lost (train/transfer.h); "" for its own mesh.
   std::vector<std::vector<double>> target_size;  ///< Per region, over the measured steps (Problem::target_size).

@@ -17,7 +17,7 @@ std::string tuned_scene_yaml(const scene::Scene& scene, const std::vector<OrganT
       changes.push_back({tuning.organ, tuning.regions});
       note << "# systole tune: organ '" << tuning.organ << "' RMS error " << tuning.before.rms_pct_of_motion
            << " % (fitted) -> " << tuning.after.rms_pct_of_motion << " % (tuned) of the target's motion, " << tuning.generations
-           << " generations.\n";
+           << " generations" << (tuning.kept_written ? "; the drives as written, the search found none closer" : "") << ".\n";
     }
   }
   return scene::scene_yaml_with_regions(scene, changes, output, note.str());
