@@ -127,9 +127,11 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
   const double h = problem.dt_s / model.substeps;
   double force_sum = 0;
   ErrorMeter floor(problem);
-  playback.run(problem.settle_steps);
+  playback.run(problem.settle_steps, [&](int k) {
+    if (k == problem.settle_steps - 1) floor.watch(state);
+  });
   playback.run(problem.measure_steps, [&](int k) {
-    floor.add(k, state.x);
+    floor.add(k, state);
     const Eigen::VectorXd dc = fits.from_forces(state, h);
     const Eigen::VectorXd by_length = fits.from_lengths(state);
     for (std::size_t r = 0; r < model.regions.size(); ++r) {

@@ -36,6 +36,7 @@ Problem make_problem(const scene::Scene& scene, std::size_t organ_index) {
   // a lattice, a myocardium), is tied to it and measured through the surface's embedding.
   Problem p{organ.name,   std::move(body.model), std::move(body.embedding), std::move(rest), body.geometry.vertex_region,
             source.world().dt_s, organ.target.rate_hz, 0, 0, load_target(organ, body.geometry), {}, {}, {}, 0, {}};
+  p.valves = std::move(body.valves);
   const double steps_per_cycle = 1.0 / (p.rate_hz * p.dt_s);
   p.settle_steps = static_cast<int>(std::lround(organ.target.settle_cycles * steps_per_cycle));
   p.measure_steps = std::max(2, static_cast<int>(std::lround(organ.target.measure_cycles * steps_per_cycle)));
@@ -111,7 +112,7 @@ double first_harmonic_phase(const std::vector<double>& samples, double t0_s, dou
   return std::atan2(s, c);
 }
 
-ErrorMeter::ErrorMeter(const Problem& problem) : problem_(problem) {
+ErrorMeter::ErrorMeter(const Problem& problem) : problem_(problem), valves_(problem.valves) {
   const std::size_t regions = problem.model.regions.size();
   region_sq_.assign(regions, 0.0);
   region_count_.assign(regions, 0);
@@ -119,8 +120,18 @@ ErrorMeter::ErrorMeter(const Problem& problem) : problem_(problem) {
   error_.size.assign(regions, {});
 }
 
-void ErrorMeter::add(int k, const Eigen::Matrix3Xd& x) {
-  surface_of(problem_, x, surface_);
+void ErrorMeter::take_surface(const sim::State& state) {
+  surface_of(problem_, state.x, surface_);
+  if (valves_.empty()) return;
+  world::update_valves(valves_, surface_, problem_.dt_s, state.chambers);
+  world::open_valves(valves_, surface_);
+}
+
+void ErrorMeter::watch(const sim::State& state) { take_surface(state); }
+
+void ErrorMeter::add(int k, const sim::State& state) {
+  take_surface(state);
+  const Eigen::Matrix3Xd& x = state.x;
   const Eigen::Matrix3Xd& target = problem_.target_at_step[static_cast<std::size_t>(k)];
   for (Eigen::Index i = 0; i < surface_.cols(); ++i) {
     const double d2 = (surface_.col(i) - target.col(i)).squaredNorm();
@@ -180,9 +191,11 @@ PlaybackError ErrorMeter::result(bool diverged) const {
 PlaybackError play(const Problem& problem, const sim::Model& model) {
   ErrorMeter meter(problem);
   world::BodyPlayback playback(model, problem.dt_s);
-  playback.run(problem.settle_steps);
+  playback.run(problem.settle_steps, [&](int k) {
+    if (k == problem.settle_steps - 1) meter.watch(playback.state());
+  });
   if (sim::diagnose(model, playback.state())) return meter.result(true);
-  playback.run(problem.measure_steps, [&](int k) { meter.add(k, playback.state().x); });
+  playback.run(problem.measure_steps, [&](int k) { meter.add(k, playback.state()); });
   return meter.result(sim::diagnose(model, playback.state()).has_value());
 }
 

@@ -9,7 +9,9 @@
 #include "scene/scene.h"
 #include "sim/model.h"
 #include "sim/reduced.h"
+#include "sim/state.h"
 #include "train/target.h"
+#include "world/valves.h"
 
 namespace systole::train {
 
@@ -36,6 +38,9 @@ struct Problem {
   /// what every error is a share of. Per region the same over the region's vertices. unit: m
   double target_motion_m = 0;
   std::vector<double> target_region_motion_m;
+  /// An anatomical heart's valves, closed (world/valves.h): the measured surface opens them
+  /// as the scene's does, by the blood's phases or the flow; empty: no valves.
+  world::ValveMotion valves;
 
   double measure_start_s() const { return settle_steps * dt_s; }
 };
@@ -75,13 +80,20 @@ struct PlaybackError {
 class ErrorMeter {
  public:
   explicit ErrorMeter(const Problem& problem);
-  /// Adds measured step k (0-based) with the body at positions x.
-  void add(int k, const Eigen::Matrix3Xd& x);
+  /// Follows the body at `state` without measuring it (the last settling step): the valves
+  /// open by the flow since the step before, so they need the step before the first measured.
+  void watch(const sim::State& state);
+  /// Adds measured step k (0-based) with the body at `state`.
+  void add(int k, const sim::State& state);
   /// The figures so far; every error infinite when `diverged` or a position was not finite.
   PlaybackError result(bool diverged = false) const;
 
  private:
+  /// The render surface of `state` into surface_, valves opened as the scene opens them.
+  void take_surface(const sim::State& state);
+
   const Problem& problem_;
+  world::ValveMotion valves_;  ///< This run's valves (their openings follow the run).
   Eigen::Matrix3Xd surface_;
   PlaybackError error_;  ///< The sizes, per region and step.
   std::vector<double> region_sq_;

@@ -116,7 +116,9 @@ bool is_locked(const scene::Target& target, const std::string& region, const std
 
 namespace {
 
-// Which regions' drives are trained: not pinned, and not every drive parameter locked.
+// Which regions' drives are trained: those the scene drives (a region without a drive is
+// passive tissue, a lining or a valve the scene only colours, and stays so), not pinned, and
+// not every drive parameter locked.
 std::vector<int> trained_regions(const scene::Organ& organ, std::vector<bool>& drive_trained) {
   const scene::Target& t = organ.target;
   std::vector<int> fitted_regions;
@@ -125,7 +127,7 @@ std::vector<int> trained_regions(const scene::Organ& organ, std::vector<bool>& d
     const scene::Region& region = organ.regions[r];
     const bool all_locked = is_locked(t, region.name, "amplitude") && is_locked(t, region.name, "shape") &&
                             is_locked(t, region.name, "delay");
-    if (region.pinned || all_locked) continue;
+    if (region.pinned || all_locked || region.drive.waveform == scene::Waveform::kNone) continue;
     drive_trained[r] = true;
     fitted_regions.push_back(static_cast<int>(r));
   }
