@@ -288,6 +288,30 @@ int even_key_count(const Tracks& tracks, double start, double span) {
   return count > 0 ? count : kDefaultSamples;
 }
 
+/// The length of a sampled clip that does not close on its first pose (`systole export
+/// --encoding frames` of a scene that does not loop): its keys evenly spaced from 0 in every
+/// track, it lasts one key interval past its last key, as a point cache of those frames does.
+/// 0 for any other clip (a closed loop lasts to its last key).
+template <class Tracks>
+double open_clip_duration(const Tracks& tracks) {
+  double duration = 0;
+  for (const auto& [node, track] : tracks) {
+    const std::size_t n = track.times.size();
+    if (n < 2 || track.values.size() % n != 0 || track.interpolation == "CUBICSPLINE") return 0;
+    const double step = track.times[1] - track.times[0];
+    if (!(step > 0) || std::abs(track.times[0]) > 1e-4 * step) return 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (std::abs(track.times[i] - step * double(i)) > 1e-3 * step) return 0;
+    }
+    const std::size_t per_key = track.values.size() / n;
+    const bool closed = std::equal(track.values.begin(), track.values.begin() + static_cast<long>(per_key),
+                                   track.values.end() - static_cast<long>(per_key));
+    if (closed) return 0;
+    duration = std::max(duration, step * double(n));
+  }
+  return duration;
+}
+
 /// `samples` poses of the blocks over period `period` of the `cycles` the animation holds,
 /// into `out` (its duration too); 0 samples: at its keys where they are even (even_key_count).
 void sample_poses(const std::filesystem::path& file, const Document& d, const Json& animation, const std::vector<Block>& blocks,
@@ -308,6 +332,7 @@ void sample_poses(const std::filesystem::path& file, const Document& d, const Js
     out.duration = std::max(out.duration, double(t.times.back()));
     track_of_node[channel.at("target").value("node", -1)] = std::move(t);
   }
+  out.duration = std::max(out.duration, open_clip_duration(track_of_node));
   if (!(out.duration > 0)) fail(file, "the animation has no duration");
   const double span = out.duration / std::max(1, cycles), start = span * std::clamp(period, 0, std::max(1, cycles) - 1);
   if (samples == 0) samples = even_key_count(track_of_node, start, span);

@@ -10,6 +10,7 @@
 #include <regex>
 #include <tiny_gltf.h>
 
+#include "mesh/gltf_read.h"
 #include "world/bake.h"
 #include "support/run.h"
 
@@ -77,6 +78,21 @@ TEST(ExportCommand, EveryFrameAsAMorphTargetIsTheSimulationToFloatRounding) {
   // The heart is under 10 cm across: two float32 roundings are below 1e-8 m.
   EXPECT_LT(worst, 2e-8) << "max coordinate difference from the simulation, m";
   EXPECT_GT(moved, 1e-4) << "the heart moves, so a wrong frame would show";
+  // Read back as a target: 12 frames of a clip that does not loop last 12 frame times (as
+  // its point cache does), sampled at the frames themselves.
+  const auto clip = mesh::read_gltf_morphs(dir / "h.glb", 0, 1, 0);
+  ASSERT_TRUE(clip.has_value());
+  EXPECT_NEAR(clip->duration, 0.4, 1e-6);
+  ASSERT_EQ(clip->poses.size(), 12u);
+  for (int f = 0; f < 12; ++f) {
+    Eigen::Matrix3Xd frame;
+    bake.read(f, 0, frame);
+    double apart = 0;
+    for (std::size_t v = 0; v < clip->poses[static_cast<std::size_t>(f)].size(); ++v) {
+      apart = std::max(apart, (clip->poses[static_cast<std::size_t>(f)][v] - Eigen::Vector3d(frame.col(static_cast<Eigen::Index>(v)))).norm());
+    }
+    EXPECT_LT(apart, 1e-7) << "frame " << f;
+  }
   // From the bake, the same bytes.
   r = run(systole() + " export " + kHeart + kShort + "--encoding frames --from-bake " + (dir / "h.bake").string() +
           " -o " + (dir / "b.glb").string());
