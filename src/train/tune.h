@@ -40,6 +40,7 @@ struct OrganTuning {
   std::vector<Parameter> parameters;    ///< What was free.
   std::vector<bool> drive_trained;      ///< Per region: its drive was fitted and tuned (else as written).
   PlaybackError written, before, after; ///< The scene's own drives, the untuned fit, the tuned drives.
+  PlaybackError after_half_step;        ///< The tuned drives at half the scene's step: the step is converged when it matches `after`.
   PlaybackError floor;                  ///< The body tied to the target (train/coupling.h): the best it does.
   PlaybackError fitted_from_forces, fitted_from_lengths;  ///< The two fits; `before` is the closer.
   std::string start_from;               ///< "forces" or "lengths": the fit the search started from.
