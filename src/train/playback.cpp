@@ -133,6 +133,8 @@ void ErrorMeter::add(int k, const sim::State& state) {
   take_surface(state);
   const Eigen::Matrix3Xd& x = state.x;
   const Eigen::Matrix3Xd& target = problem_.target_at_step[static_cast<std::size_t>(k)];
+  if (error_sum_.cols() != surface_.cols()) error_sum_ = Eigen::Matrix3Xd::Zero(3, surface_.cols());
+  error_sum_ += surface_ - target;
   for (Eigen::Index i = 0; i < surface_.cols(); ++i) {
     const double d2 = (surface_.col(i) - target.col(i)).squaredNorm();
     sq_ += d2;
@@ -155,7 +157,7 @@ PlaybackError ErrorMeter::result(bool diverged) const {
   PlaybackError e = error_;
   if (diverged || !std::isfinite(sq_)) {
     e.diverged = true;
-    e.rms_pct_of_motion = e.rms_pct_of_diagonal = e.max_pct_of_diagonal = e.volume_percent =
+    e.rms_pct_of_motion = e.rms_pct_of_diagonal = e.max_pct_of_diagonal = e.volume_percent = e.mean_offset_pct_of_motion =
         std::numeric_limits<double>::infinity();
     for (auto& r : e.regions) r.rms_pct_of_motion = std::numeric_limits<double>::infinity();
     return e;
@@ -167,6 +169,10 @@ PlaybackError ErrorMeter::result(bool diverged) const {
   e.rms_pct_of_diagonal = rms_m * to_percent;
   e.rms_pct_of_motion = share_of(rms_m, problem.target_motion_m);
   e.max_pct_of_diagonal = std::sqrt(max_sq_) * to_percent;
+  if (error_sum_.cols() > 0) {
+    const double offset_m = (error_sum_ / problem.measure_steps).colwise().squaredNorm().mean();
+    e.mean_offset_pct_of_motion = share_of(std::sqrt(offset_m), problem.target_motion_m);
+  }
   if (mean_volume_ > 0) {
     const double mean_volume = mean_volume_ / problem.measure_steps;
     e.volume_percent = std::sqrt(volume_sq_ / problem.measure_steps) / mean_volume * 100.0;

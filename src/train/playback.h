@@ -70,6 +70,10 @@ struct PlaybackError {
   double rms_pct_of_diagonal = 0;  ///< The same error, % of the bounding diagonal.
   double max_pct_of_diagonal = 0;  ///< Largest vertex error at any time, % of the bounding diagonal.
   double volume_percent = 0;       ///< RMS enclosed-volume error, % of the target's mean volume.
+  /// The part of the RMS error that is a constant offset: each vertex's mean error over the
+  /// measured steps, RMS over vertices, % of the target's motion. What is left,
+  /// sqrt(rms^2 - offset^2), is the error of the motion about the mean shape. unit: %
+  double mean_offset_pct_of_motion = 0;
   std::vector<RegionError> regions;
   std::vector<std::vector<double>> size;  ///< Per region and measured step, as Problem::target_size.
   bool diverged = false;      ///< The body blew up: every error is then infinite.
@@ -96,6 +100,7 @@ class ErrorMeter {
   world::ValveMotion valves_;  ///< This run's valves (their openings follow the run).
   Eigen::Matrix3Xd surface_;
   PlaybackError error_;  ///< The sizes, per region and step.
+  Eigen::Matrix3Xd error_sum_;  ///< Per surface vertex: its error summed over the measured steps. unit: m
   std::vector<double> region_sq_;
   std::vector<int> region_count_;
   double sq_ = 0, max_sq_ = 0, volume_sq_ = 0, mean_volume_ = 0;

@@ -101,7 +101,8 @@ std::string format_error(const PlaybackError& e) {
   std::ostringstream s;
   s.precision(3);
   s << "RMS " << e.rms_pct_of_motion << " % of the target's motion (" << e.rms_pct_of_diagonal << " % of the diagonal), max "
-    << e.max_pct_of_diagonal << " % of the diagonal, volume " << e.volume_percent << " %";
+    << e.max_pct_of_diagonal << " % of the diagonal, volume " << e.volume_percent << " %, mean-shape offset "
+    << e.mean_offset_pct_of_motion << " % of the motion";
   return s.str();
 }
 
