@@ -104,6 +104,18 @@ class SpringFits {
   Eigen::VectorXd residual_;
 };
 
+/// The surface points the coupling ties to the target: the problem's embedding less the
+/// valves' leaflets. A leaflet's place is the body's plus its valve's opening (world/valves.h),
+/// which the measured surface adds; tied to where the target's leaflets swing, the embedded
+/// point would drag the lattice cells around the valve ring open with it instead.
+sim::Embedding coupled_points(const Problem& problem) {
+  sim::Embedding points = problem.embedding;
+  for (const world::ValveMotion::Leaflets& valve : problem.valves.valves) {
+    for (const int v : valve.vertices) points.weight.col(v).setZero();
+  }
+  return points;
+}
+
 }  // namespace
 
 RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, double coupling_N_per_m,
@@ -114,7 +126,8 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
   sim::Attachments coupling;
   coupling.target = [&target, rate](double t_s, Eigen::Matrix3Xd& out) { target.positions(rate * t_s, out); };
   coupling.compliance_m_per_N = 1.0 / coupling_N_per_m;
-  if (!problem.embedding.empty()) coupling.points = &problem.embedding;
+  const sim::Embedding points = coupled_points(problem);
+  if (!points.empty()) coupling.points = &points;
 
   RecordedSignals rec;
   rec.contraction.assign(model.regions.size(), {});
@@ -126,7 +139,7 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
   SpringFits fits(model, fitted);
   const double h = problem.dt_s / model.substeps;
   double force_sum = 0;
-  ErrorMeter floor(problem);
+  ErrorMeter floor(problem, ErrorMeter::Valves::kAsTheTarget);
   playback.run(problem.settle_steps, [&](int k) {
     if (k == problem.settle_steps - 1) floor.watch(state);
   });
@@ -145,6 +158,23 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
   rec.mean_coupling_force_N = force_sum / problem.measure_steps;
   rec.floor = floor.result(sim::diagnose(model, state).has_value());
   return rec;
+}
+
+std::vector<std::vector<double>> length_reading_offset(const Problem& problem, const sim::Model& model,
+                                                       const std::vector<int>& fitted) {
+  std::vector<std::vector<double>> offset(model.regions.size());
+  world::BodyPlayback playback(model, problem.dt_s);
+  const sim::State& state = playback.state();
+  SpringFits fits(model, fitted);
+  playback.run(problem.settle_steps);
+  playback.run(problem.measure_steps, [&](int) {
+    const Eigen::VectorXd read = fits.from_lengths(state);
+    for (std::size_t r = 0; r < offset.size(); ++r) {
+      const auto i = static_cast<Eigen::Index>(r);
+      offset[r].push_back(fits.fitted(r) ? read[i] - state.region_contraction[i] : 0.0);
+    }
+  });
+  return offset;
 }
 
 }  // namespace systole::train

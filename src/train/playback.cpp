@@ -1,5 +1,6 @@
 #include "train/playback.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -102,17 +103,18 @@ std::vector<double> region_sizes(const Problem& problem, const Eigen::Matrix3Xd&
   return size;
 }
 
-double first_harmonic_phase(const std::vector<double>& samples, double t0_s, double dt_s, double rate_hz) {
+std::complex<double> first_harmonic(const std::vector<double>& samples, double t0_s, double dt_s, double rate_hz) {
   double c = 0, s = 0;
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const double w = 2.0 * std::numbers::pi * rate_hz * (t0_s + double(k) * dt_s);
     c += samples[k] * std::cos(w);
     s += samples[k] * std::sin(w);
   }
-  return std::atan2(s, c);
+  return {c, s};
 }
 
-ErrorMeter::ErrorMeter(const Problem& problem) : problem_(problem), valves_(problem.valves) {
+ErrorMeter::ErrorMeter(const Problem& problem, Valves valves)
+    : problem_(problem), valves_(problem.valves), valves_cue_(valves) {
   const std::size_t regions = problem.model.regions.size();
   region_sq_.assign(regions, 0.0);
   region_count_.assign(regions, 0);
@@ -120,19 +122,43 @@ ErrorMeter::ErrorMeter(const Problem& problem) : problem_(problem), valves_(prob
   error_.size.assign(regions, {});
 }
 
-void ErrorMeter::take_surface(const sim::State& state) {
+namespace {
+
+/// Each valve opened as far as the target's leaflets are from the closed ones along their
+/// opening (mean over the leaflets' vertices, 0 .. 1): tied to the target, as the body is.
+void open_as_the_target(world::ValveMotion& valves, const Eigen::Matrix3Xd& target, Eigen::Matrix3Xd& surface) {
+  for (world::ValveMotion::Leaflets& valve : valves.valves) {
+    double sum = 0;
+    for (std::size_t i = 0; i < valve.vertices.size(); ++i) {
+      const Eigen::Vector3d delta = valve.open_delta.col(static_cast<Eigen::Index>(i));
+      const int v = valve.vertices[i];
+      const double length_sq = delta.squaredNorm();
+      if (length_sq > 0) sum += std::clamp((target.col(v) - surface.col(v)).dot(delta) / length_sq, 0.0, 1.0);
+    }
+    valve.opening = valve.vertices.empty() ? 0.0 : sum / static_cast<double>(valve.vertices.size());
+  }
+  world::open_valves(valves, surface);
+}
+
+}  // namespace
+
+void ErrorMeter::take_surface(const sim::State& state, const Eigen::Matrix3Xd* target) {
   surface_of(problem_, state.x, surface_);
   if (valves_.empty()) return;
+  if (valves_cue_ == Valves::kAsTheTarget) {
+    if (target != nullptr) open_as_the_target(valves_, *target, surface_);
+    return;
+  }
   world::update_valves(valves_, surface_, problem_.dt_s, state.chambers);
   world::open_valves(valves_, surface_);
 }
 
-void ErrorMeter::watch(const sim::State& state) { take_surface(state); }
+void ErrorMeter::watch(const sim::State& state) { take_surface(state, nullptr); }
 
 void ErrorMeter::add(int k, const sim::State& state) {
-  take_surface(state);
   const Eigen::Matrix3Xd& x = state.x;
   const Eigen::Matrix3Xd& target = problem_.target_at_step[static_cast<std::size_t>(k)];
+  take_surface(state, &target);
   if (error_sum_.cols() != surface_.cols()) error_sum_ = Eigen::Matrix3Xd::Zero(3, surface_.cols());
   error_sum_ += surface_ - target;
   for (Eigen::Index i = 0; i < surface_.cols(); ++i) {
@@ -187,8 +213,8 @@ PlaybackError ErrorMeter::result(bool diverged) const {
       e.regions[r].rms_pct_of_motion =
           share_of(std::sqrt(region_sq_[r] / region_count_[r]), problem.target_region_motion_m[r]);
     }
-    const double played = first_harmonic_phase(e.size[r], t0, problem.dt_s, problem.rate_hz);
-    const double wanted = first_harmonic_phase(problem.target_size[r], t0, problem.dt_s, problem.rate_hz);
+    const double played = std::arg(first_harmonic(e.size[r], t0, problem.dt_s, problem.rate_hz));
+    const double wanted = std::arg(first_harmonic(problem.target_size[r], t0, problem.dt_s, problem.rate_hz));
     e.regions[r].phase_deg = std::remainder(played - wanted, 2.0 * std::numbers::pi) * 180.0 / std::numbers::pi;
   }
   return e;

@@ -3,6 +3,7 @@
 // error of the body running free (no coupling) against the target.
 
 #include <Eigen/Core>
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -83,7 +84,12 @@ struct PlaybackError {
 /// a free playback's, or the coupled recording's (the floor: the body tied to the target).
 class ErrorMeter {
  public:
-  explicit ErrorMeter(const Problem& problem);
+  /// How the measured surface's valves open: as the scene opens them (by the blood's phases
+  /// or the flow), or as the target's do (the coupled recording, the floor: its leaflets
+  /// are tied to the target's as its body is, and its solver, XPBD, holds no blood to open
+  /// them by).
+  enum class Valves { kAsTheScene, kAsTheTarget };
+  explicit ErrorMeter(const Problem& problem, Valves valves = Valves::kAsTheScene);
   /// Follows the body at `state` without measuring it (the last settling step): the valves
   /// open by the flow since the step before, so they need the step before the first measured.
   void watch(const sim::State& state);
@@ -93,11 +99,13 @@ class ErrorMeter {
   PlaybackError result(bool diverged = false) const;
 
  private:
-  /// The render surface of `state` into surface_, valves opened as the scene opens them.
-  void take_surface(const sim::State& state);
+  /// The render surface of `state` into surface_, valves opened as `valves_cue_` says;
+  /// `target`: the target now (null while settling).
+  void take_surface(const sim::State& state, const Eigen::Matrix3Xd* target);
 
   const Problem& problem_;
   world::ValveMotion valves_;  ///< This run's valves (their openings follow the run).
+  Valves valves_cue_;
   Eigen::Matrix3Xd surface_;
   PlaybackError error_;  ///< The sizes, per region and step.
   Eigen::Matrix3Xd error_sum_;  ///< Per surface vertex: its error summed over the measured steps. unit: m
@@ -113,7 +121,9 @@ PlaybackError play(const Problem& problem, const sim::Model& model);
 /// The base model with the scene regions' drives and stiffness scales (sim::with_regions).
 sim::Model with_regions(const sim::Model& base, const std::vector<scene::Region>& regions);
 
-/// Phase of the first harmonic at `rate_hz` of samples taken every dt from t0. unit: rad
-double first_harmonic_phase(const std::vector<double>& samples, double t0_s, double dt_s, double rate_hz);
+/// The first harmonic at `rate_hz` of samples taken every dt from t0: sum_k s_k e^(i w t_k)
+/// over the samples (its argument the phase, unit: rad; its magnitude in the samples' unit
+/// times the sample count).
+std::complex<double> first_harmonic(const std::vector<double>& samples, double t0_s, double dt_s, double rate_hz);
 
 }  // namespace systole::train

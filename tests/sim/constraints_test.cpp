@@ -1,9 +1,11 @@
 // The constraint kernels alone: a distance projection restores the rest length, the volume
-// gradient is the derivative of the volume, an attachment moves a particle by its share.
+// gradient is the derivative of the volume, an attachment moves a particle by its share, and
+// a cell's embedded points pull its corners together, in no order.
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <random>
 
 #include "sim/constraints/attachment.h"
 #include "sim/constraints/distance.h"
@@ -73,6 +75,85 @@ TEST(AttachmentConstraint, MovesAFreeParticleByItsShareAndLeavesAPinnedOne) {
   Eigen::Vector3d pinned(1, 0, 0);
   EXPECT_EQ(solve_attachment(pinned, target, 0.0, 1.0), Eigen::Vector3d::Zero());
   EXPECT_EQ(pinned, Eigen::Vector3d(1, 0, 0));
+}
+
+/// One unit cell (corner k at the bits of k) holding `n`^3 points on a grid inside it, at
+/// their trilinear weights.
+struct Cell {
+  Eigen::Matrix3Xd corners = Eigen::Matrix3Xd(3, 8);
+  Embedding points;
+  Eigen::Matrix3Xd rest;  ///< The points where the corners are now.
+
+  explicit Cell(int n) {
+    for (int k = 0; k < 8; ++k) corners.col(k) = Eigen::Vector3d(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+    const int count = n * n * n;
+    points.node.resize(8, count);
+    points.weight.resize(8, count);
+    rest.resize(3, count);
+    for (int v = 0; v < count; ++v) {
+      const Eigen::Vector3d u((v % n + 0.5) / n, (v / n % n + 0.5) / n, (v / (n * n) + 0.5) / n);
+      rest.col(v) = u;
+      for (int k = 0; k < 8; ++k) {
+        points.node(k, v) = k;
+        points.weight(k, v) = (k & 1 ? u.x() : 1 - u.x()) * ((k >> 1) & 1 ? u.y() : 1 - u.y()) *
+                              ((k >> 2) & 1 ? u.z() : 1 - u.z());
+      }
+    }
+  }
+};
+
+TEST(EmbeddedAttachments, ACellFollowsItsPointsToWhereTheyAreAllAsked) {
+  Cell cell(4);
+  const Eigen::Vector3d shift(0.1, -0.2, 0.05);
+  const Eigen::Matrix3Xd targets = cell.rest.colwise() + shift;
+  Eigen::Matrix3Xd lambda = Eigen::Matrix3Xd::Zero(3, 8);
+  const Eigen::VectorXd inverse_mass = Eigen::VectorXd::Ones(8);
+  for (int pass = 0; pass < 30; ++pass) {
+    solve_embedded_attachments(cell.corners, cell.points, targets, inverse_mass, 0.0, lambda);
+  }
+  Eigen::Matrix3Xd reached;
+  embed(cell.points, cell.corners, reached);
+  EXPECT_LT((reached - targets).colwise().norm().maxCoeff(), 1e-6 * shift.norm());
+}
+
+TEST(EmbeddedAttachments, PointsAreProjectedTogetherSoTheirOrderDoesNotMatter) {
+  // Targets that disagree (noise about a shift): projected one after another, the last
+  // points would have the corners their way; together, the order is only rounding.
+  Cell cell(3);
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  Eigen::Matrix3Xd targets = cell.rest.colwise() + Eigen::Vector3d(0.1, 0, 0);
+  for (Eigen::Index v = 0; v < targets.cols(); ++v) targets.col(v) += Eigen::Vector3d(noise(random), noise(random), noise(random));
+  Cell reversed = cell;
+  Eigen::Matrix3Xd reversed_targets = targets;
+  const Eigen::Index n = targets.cols();
+  for (Eigen::Index v = 0; v < n; ++v) {
+    reversed.points.node.col(v) = cell.points.node.col(n - 1 - v);
+    reversed.points.weight.col(v) = cell.points.weight.col(n - 1 - v);
+    reversed_targets.col(v) = targets.col(n - 1 - v);
+  }
+  const Eigen::VectorXd inverse_mass = Eigen::VectorXd::Ones(8);
+  Eigen::Matrix3Xd lambda = Eigen::Matrix3Xd::Zero(3, 8), reversed_lambda = lambda;
+  solve_embedded_attachments(cell.corners, cell.points, targets, inverse_mass, 0.0, lambda);
+  solve_embedded_attachments(reversed.corners, reversed.points, reversed_targets, inverse_mass, 0.0, reversed_lambda);
+  EXPECT_LT((cell.corners - reversed.corners).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_GT((cell.corners.row(0).array() - Cell(3).corners.row(0).array()).minCoeff(), 0.05);  // All moved along.
+}
+
+TEST(EmbeddedAttachments, APinnedCornerStaysAndEachMultiplierIsItsParticlesMove) {
+  Cell cell(3);
+  const Eigen::Matrix3Xd before = cell.corners;
+  const Eigen::Matrix3Xd targets = cell.rest.colwise() + Eigen::Vector3d(0, 0, 0.2);
+  Eigen::VectorXd inverse_mass = Eigen::VectorXd::Constant(8, 0.5);
+  inverse_mass[0] = 0;
+  Eigen::Matrix3Xd lambda = Eigen::Matrix3Xd::Zero(3, 8);
+  solve_embedded_attachments(cell.corners, cell.points, targets, inverse_mass, 0.0, lambda);
+  EXPECT_EQ(cell.corners.col(0), before.col(0));
+  EXPECT_GT(lambda(2, 0), 0);  // The pinned corner still takes its share of the force.
+  for (int k = 1; k < 8; ++k) {
+    EXPECT_NEAR((cell.corners(2, k) - before(2, k)), inverse_mass[k] * lambda(2, k), 1e-15);
+    EXPECT_GT(cell.corners(2, k), before(2, k));
+  }
 }
 
 }  // namespace

@@ -20,26 +20,44 @@ inline Eigen::Vector3d solve_attachment(Eigen::Ref<Eigen::Vector3d> x, const Eig
   return dlambda;
 }
 
-/// The same for surface point v embedded in the body (sim/reduced.h): C = sum_k w_k x_k +
-/// offset - target, gradient w_k on corner k, so dlambda = -C / (sum_k w_k^2 w_inv_k +
-/// alpha_tilde) and corner k moves by w_inv_k w_k dlambda. Adds w_k dlambda to corner k's
-/// column of `lambda`: the coupling's force on each particle is then lambda / h^2.
-inline void solve_embedded_attachment(Eigen::Matrix3Xd& x, const Embedding& e, int v, const Eigen::Vector3d& target,
-                                      const Eigen::VectorXd& inverse_mass, double alpha_tilde, Eigen::Matrix3Xd& lambda) {
-  Eigen::Vector3d p = e.offset.cols() ? Eigen::Vector3d(e.offset.col(v)) : Eigen::Vector3d::Zero();
-  double denominator = alpha_tilde;
-  for (int k = 0; k < 8; ++k) {
-    const double w = e.weight(k, v);
-    p += w * x.col(e.node(k, v));
-    denominator += w * w * inverse_mass[e.node(k, v)];
+/// Every surface point embedded in the body (sim/reduced.h) at once: point v's constraint
+/// C_v = sum_k w_k x_k + offset - target_v, gradient w_k on corner k, asks dlambda_v =
+/// -C_v / (sum_k w_k^2 w_inv_k + alpha_tilde) and moves corner k by w_inv_k w_k dlambda_v.
+/// All points are projected from the same positions and a corner moves by the mean of what
+/// its points ask, each weighted by its hold on the corner w_k (Jacobi with constraint
+/// averaging, Macklin et al. 2014, sec. 4.2; a point at the far side of a cell asks next to
+/// nothing of a corner and does not dilute what the near points ask). A
+/// render surface has tens of points per cell: projected one after another (Gauss-Seidel)
+/// each point drags the shared corners its own way, the last ones undo the first, and the
+/// cell ends far from where its points are on average (the atlas heart's floor was 8x its
+/// motion). `lambda` gains each corner's averaged share, so lambda / h^2 stays the force
+/// the coupling exerts on each particle. Sequential sums: the same at any thread count.
+inline void solve_embedded_attachments(Eigen::Matrix3Xd& x, const Embedding& e, const Eigen::Matrix3Xd& targets,
+                                       const Eigen::VectorXd& inverse_mass, double alpha_tilde,
+                                       Eigen::Matrix3Xd& lambda) {
+  Eigen::Matrix3Xd pull = Eigen::Matrix3Xd::Zero(3, x.cols());  // Per corner, sum of w_k * w_k dlambda_v.
+  Eigen::VectorXd hold = Eigen::VectorXd::Zero(x.cols());       // Per corner, sum of w_k.
+  for (int v = 0; v < e.vertex_count(); ++v) {
+    Eigen::Vector3d p = e.offset.cols() ? Eigen::Vector3d(e.offset.col(v)) : Eigen::Vector3d::Zero();
+    double denominator = alpha_tilde;
+    for (int k = 0; k < 8; ++k) {
+      const double w = e.weight(k, v);
+      p += w * x.col(e.node(k, v));
+      denominator += w * w * inverse_mass[e.node(k, v)];
+    }
+    if (denominator <= alpha_tilde) continue;  // Every corner pinned (or weightless): nothing moves.
+    const Eigen::Vector3d dlambda = -(p - targets.col(v)) / denominator;
+    for (int k = 0; k < 8; ++k) {
+      const double w = e.weight(k, v);
+      pull.col(e.node(k, v)) += w * w * dlambda;
+      hold[e.node(k, v)] += w;
+    }
   }
-  if (denominator <= alpha_tilde) return;  // Every corner pinned (or weightless): nothing moves.
-  const Eigen::Vector3d dlambda = -(p - target) / denominator;
-  for (int k = 0; k < 8; ++k) {
-    const int i = e.node(k, v);
-    const double w = e.weight(k, v);
-    x.col(i) += inverse_mass[i] * w * dlambda;
-    lambda.col(i) += w * dlambda;
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    if (hold[i] == 0) continue;
+    const Eigen::Vector3d share = pull.col(i) / hold[i];
+    x.col(i) += inverse_mass[i] * share;
+    lambda.col(i) += share;
   }
 }
 

@@ -91,12 +91,13 @@ void solve_attachments(const Model& model, const Attachments* coupling, State& s
   coupling->target(t, s.attachment_target);
   const double alpha_tilde = coupling->compliance_m_per_N / (h * h);
   if (coupling->points != nullptr && !coupling->points->empty()) {
-    // Embedded points, in order (Gauss-Seidel, the same at any thread count); each
-    // particle's multiplier sums its weighted share, so lambda / h^2 stays its force.
-    const Embedding& e = *coupling->points;
-    for (int v = 0; v < e.vertex_count(); ++v) {
-      solve_embedded_attachment(s.x, e, v, s.attachment_target.col(v), model.inverse_mass, alpha_tilde,
-                                s.attachment_lambda);
+    // Jacobi passes converge slower than Gauss-Seidel's: on the anatomical heart tied to its
+    // own motion the walls' floor is 15 % of their motion after one pass per substep, 3-4 %
+    // after four, 0.2-0.6 % after sixteen, at a small share of the coupled run's cost.
+    constexpr int kPasses = 4;
+    for (int pass = 0; pass < kPasses; ++pass) {
+      solve_embedded_attachments(s.x, *coupling->points, s.attachment_target, model.inverse_mass, alpha_tilde,
+                                 s.attachment_lambda);
     }
     return;
   }
