@@ -36,7 +36,7 @@ Problem make_problem(const scene::Scene& scene, std::size_t organ_index) {
   // The target moves the render surface; the body, whatever it is (every vertex a particle,
   // a lattice, a myocardium), is tied to it and measured through the surface's embedding.
   Problem p{organ.name,   std::move(body.model), std::move(body.embedding), std::move(rest), body.geometry.vertex_region,
-            source.world().dt_s, organ.target.rate_hz, 0, 0, load_target(organ, body.geometry), {}, {}, {}, 0, {}};
+            source.world().dt_s, organ.target.rate_hz, 0, 0, load_target(organ, body.geometry), {}, {}, {}, 0, {}, {}};
   p.valves = std::move(body.valves);
   const double steps_per_cycle = 1.0 / (p.rate_hz * p.dt_s);
   p.settle_steps = static_cast<int>(std::lround(organ.target.settle_cycles * steps_per_cycle));
