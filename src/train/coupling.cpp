@@ -160,21 +160,4 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
   return rec;
 }
 
-std::vector<std::vector<double>> length_reading_offset(const Problem& problem, const sim::Model& model,
-                                                       const std::vector<int>& fitted) {
-  std::vector<std::vector<double>> offset(model.regions.size());
-  world::BodyPlayback playback(model, problem.dt_s);
-  const sim::State& state = playback.state();
-  SpringFits fits(model, fitted);
-  playback.run(problem.settle_steps);
-  playback.run(problem.measure_steps, [&](int) {
-    const Eigen::VectorXd read = fits.from_lengths(state);
-    for (std::size_t r = 0; r < offset.size(); ++r) {
-      const auto i = static_cast<Eigen::Index>(r);
-      offset[r].push_back(fits.fitted(r) ? read[i] - state.region_contraction[i] : 0.0);
-    }
-  });
-  return offset;
-}
-
 }  // namespace systole::train

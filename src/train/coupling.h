@@ -41,13 +41,4 @@ struct RecordedSignals {
 RecordedSignals record_coupled(const Problem& problem, const sim::Model& model, double coupling_N_per_m,
                                const std::vector<int>& fitted);
 
-/// What reading contractions from lengths adds to the drive in `model` running free (the
-/// scene's solver, its blood, no coupling), per fitted region and measured step: the
-/// length-read contraction minus the driven one. A spring under load (the blood's pressure,
-/// the pinned vessels, its neighbours' pull) is not at its driven rest length, so the
-/// reading is off the drive even for the drives that made the target; subtracting this from
-/// the coupled reading corrects for it (one step of a fixed-point iteration). unit: 1
-std::vector<std::vector<double>> length_reading_offset(const Problem& problem, const sim::Model& model,
-                                                       const std::vector<int>& fitted);
-
 }  // namespace systole::train

@@ -103,14 +103,14 @@ std::vector<double> region_sizes(const Problem& problem, const Eigen::Matrix3Xd&
   return size;
 }
 
-std::complex<double> first_harmonic(const std::vector<double>& samples, double t0_s, double dt_s, double rate_hz) {
+double first_harmonic_phase(const std::vector<double>& samples, double t0_s, double dt_s, double rate_hz) {
   double c = 0, s = 0;
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const double w = 2.0 * std::numbers::pi * rate_hz * (t0_s + double(k) * dt_s);
     c += samples[k] * std::cos(w);
     s += samples[k] * std::sin(w);
   }
-  return {c, s};
+  return std::atan2(s, c);
 }
 
 ErrorMeter::ErrorMeter(const Problem& problem, Valves valves)
@@ -213,8 +213,8 @@ PlaybackError ErrorMeter::result(bool diverged) const {
       e.regions[r].rms_pct_of_motion =
           share_of(std::sqrt(region_sq_[r] / region_count_[r]), problem.target_region_motion_m[r]);
     }
-    const double played = std::arg(first_harmonic(e.size[r], t0, problem.dt_s, problem.rate_hz));
-    const double wanted = std::arg(first_harmonic(problem.target_size[r], t0, problem.dt_s, problem.rate_hz));
+    const double played = first_harmonic_phase(e.size[r], t0, problem.dt_s, problem.rate_hz);
+    const double wanted = first_harmonic_phase(problem.target_size[r], t0, problem.dt_s, problem.rate_hz);
     e.regions[r].phase_deg = std::remainder(played - wanted, 2.0 * std::numbers::pi) * 180.0 / std::numbers::pi;
   }
   return e;

@@ -3,7 +3,6 @@
 // error of the body running free (no coupling) against the target.
 
 #include <Eigen/Core>
-#include <complex>
 #include <string>
 #include <vector>
 
@@ -121,9 +120,7 @@ PlaybackError play(const Problem& problem, const sim::Model& model);
 /// The base model with the scene regions' drives and stiffness scales (sim::with_regions).
 sim::Model with_regions(const sim::Model& base, const std::vector<scene::Region>& regions);
 
-/// The first harmonic at `rate_hz` of samples taken every dt from t0: sum_k s_k e^(i w t_k)
-/// over the samples (its argument the phase, unit: rad; its magnitude in the samples' unit
-/// times the sample count).
-std::complex<double> first_harmonic(const std::vector<double>& samples, double t0_s, double dt_s, double rate_hz);
+/// Phase of the first harmonic at `rate_hz` of samples taken every dt from t0. unit: rad
+double first_harmonic_phase(const std::vector<double>& samples, double t0_s, double dt_s, double rate_hz);
 
 }  // namespace systole::train

@@ -96,8 +96,7 @@ std::string report_markdown(const std::string& scene_path, const std::vector<Org
       << error_row("floor: tied to the target (" + fixed(t.coupling_N_per_m, 0) + " N/m)", t.floor, t.floor)
       << error_row("as written", t.written, t.floor)
       << error_row("fitted from forces (untuned)", t.fitted_from_forces, t.floor)
-      << error_row("fitted from lengths (untuned)", t.fitted_from_lengths, t.floor)
-      << error_row("tuned", t.after, t.floor)
+      << error_row("fitted from lengths (untuned)", t.fitted_from_lengths, t.floor) << error_row("tuned", t.after, t.floor)
       << error_row("tuned, at half the step", t.after_half_step, t.floor)
       << "\n"
       << t.parameters.size() << " free parameters, searched from the fit from " << t.start_from << "; " << t.generations

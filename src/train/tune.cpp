@@ -239,8 +239,8 @@ double balanced_error(const PlaybackError& e, const std::vector<int>& regions) {
   return std::sqrt(sum / count);
 }
 
-// CMA-ES over the free parameters from the fitted start, each playback scored by its RMS
-// error, every generation logged.
+// CMA-ES over the free parameters from the fitted start, each playback scored by its
+// balanced error, every generation logged.
 CmaesResult search(const Problem& problem, const scene::Target& t, const std::vector<scene::Region>& start,
                    const std::vector<Parameter>& parameters, const TuneSettings& settings,
                    const std::function<void(const std::string&)>& log) {

@@ -123,7 +123,9 @@ TEST(EmbeddedAttachments, PointsAreProjectedTogetherSoTheirOrderDoesNotMatter) {
   std::mt19937 random(7);
   std::normal_distribution<double> noise(0.0, 0.05);
   Eigen::Matrix3Xd targets = cell.rest.colwise() + Eigen::Vector3d(0.1, 0, 0);
-  for (Eigen::Index v = 0; v < targets.cols(); ++v) targets.col(v) += Eigen::Vector3d(noise(random), noise(random), noise(random));
+  for (Eigen::Index v = 0; v < targets.cols(); ++v) {
+    targets.col(v) += Eigen::Vector3d(noise(random), noise(random), noise(random));
+  }
   Cell reversed = cell;
   Eigen::Matrix3Xd reversed_targets = targets;
   const Eigen::Index n = targets.cols();

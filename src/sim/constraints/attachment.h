@@ -26,12 +26,12 @@ inline Eigen::Vector3d solve_attachment(Eigen::Ref<Eigen::Vector3d> x, const Eig
 /// All points are projected from the same positions and a corner moves by the mean of what
 /// its points ask, each weighted by its hold on the corner w_k (Jacobi with constraint
 /// averaging, Macklin et al. 2014, sec. 4.2; a point at the far side of a cell asks next to
-/// nothing of a corner and does not dilute what the near points ask). A
-/// render surface has tens of points per cell: projected one after another (Gauss-Seidel)
-/// each point drags the shared corners its own way, the last ones undo the first, and the
-/// cell ends far from where its points are on average (the atlas heart's floor was 8x its
-/// motion). `lambda` gains each corner's averaged share, so lambda / h^2 stays the force
-/// the coupling exerts on each particle. Sequential sums: the same at any thread count.
+/// nothing of a corner and does not dilute what the near points ask). A render surface has
+/// tens of points per cell: projected one after another (Gauss-Seidel), each point drags the
+/// shared corners its own way and the last ones undo the first (the anatomical heart tied
+/// to its own motion stayed 140 % of that motion away). `lambda` gains each corner's
+/// averaged share, so lambda / h^2 stays the force the coupling exerts on each particle.
+/// Sequential sums: the same at any thread count.
 inline void solve_embedded_attachments(Eigen::Matrix3Xd& x, const Embedding& e, const Eigen::Matrix3Xd& targets,
                                        const Eigen::VectorXd& inverse_mass, double alpha_tilde,
                                        Eigen::Matrix3Xd& lambda) {

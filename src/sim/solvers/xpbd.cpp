@@ -92,7 +92,7 @@ void solve_attachments(const Model& model, const Attachments* coupling, State& s
   const double alpha_tilde = coupling->compliance_m_per_N / (h * h);
   if (coupling->points != nullptr && !coupling->points->empty()) {
     // Jacobi passes converge slower than Gauss-Seidel's: on the anatomical heart tied to its
-    // own motion the walls' floor is 15 % of their motion after one pass per substep, 3-4 %
+    // own motion the walls' floor is 11-19 % of their motion after one pass per substep, 3-7 %
     // after four, 0.2-0.6 % after sixteen, at a small share of the coupled run's cost.
     constexpr int kPasses = 4;
     for (int pass = 0; pass < kPasses; ++pass) {
