@@ -2,10 +2,10 @@
 // Issue 37's round trip on the shipped anatomical heart, with its blood and without: the
 // scene's clip exported as a point cache is its own target, the known drives play it back
 // within the key frames' interpolation, and drives perturbed by 30 % in amplitude and 40 ms
-// in delay (each waveform kept, `lock: [shape]`) are tuned back to it: within 10 % of its
-// motion, every amplitude within 10 % and every delay within 10 ms (issue 37, acceptance 1).
-// About 100 s each on two cores: 500 playbacks, where the search needs them (at 150 it ends
-// at 13-22 %, the atria's drives still wrong; docs/training.md).
+// in delay (each waveform and stiffness kept, `lock: [shape, stiffness]`) are tuned back to
+// it: within 10 % of its motion, every amplitude within 10 % and every delay within 10 ms
+// (issue 37, acceptance 1). About 100 s each on two cores: 500 playbacks, where the search
+// needs them (at 150 it ends at 13-22 %, the atria's drives still wrong; docs/training.md).
 
 #include <gtest/gtest.h>
 
