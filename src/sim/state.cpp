@@ -14,6 +14,8 @@ State initial_state(const Model& model) {
   s.force = Eigen::Matrix3Xd::Zero(3, n);
   s.attachment_lambda = Eigen::Matrix3Xd::Zero(3, n);  // Written only while a coupling is passed to step.
   s.attachment_target = s.attachment_lambda;
+  s.attachment_pull = s.attachment_lambda;
+  s.attachment_hold = Eigen::VectorXd::Zero(n);
   for (const Chamber& chamber : model.circulation.chambers) {
     ChamberState c;
     c.volume_m3 = chamber.rest_m3;

@@ -56,6 +56,10 @@ struct State {
   Eigen::VectorXd region_contraction;  ///< amplitude * phi per region at the current substep. unit: 1
   Eigen::Matrix3Xd volume_gradient;  ///< dV/dx per particle. unit: m^2
   Eigen::Matrix3Xd attachment_target;  ///< Attachment targets at the current substep. unit: m
+  /// Per particle, what its embedded attachment points ask of it and their summed weights
+  /// (sim::solve_embedded_attachments). unit: N s^2, 1
+  Eigen::Matrix3Xd attachment_pull;
+  Eigen::VectorXd attachment_hold;
   Eigen::Matrix3Xd force;            ///< Force per particle (explicit and implicit solvers). unit: N
   SolverScratch solver_cache;        ///< The implicit or projective solver's matrices (built lazily).
 };

@@ -83,6 +83,13 @@ struct Cell {
   Eigen::Matrix3Xd corners = Eigen::Matrix3Xd(3, 8);
   Embedding points;
   Eigen::Matrix3Xd rest;  ///< The points where the corners are now.
+  Eigen::Matrix3Xd lambda = Eigen::Matrix3Xd::Zero(3, 8), pull = lambda;
+  Eigen::VectorXd hold = Eigen::VectorXd::Zero(8);
+
+  /// One pass of the cell's points towards `targets`.
+  void solve(const Eigen::Matrix3Xd& targets, const Eigen::VectorXd& inverse_mass) {
+    solve_embedded_attachments(corners, points, targets, inverse_mass, 0.0, lambda, pull, hold);
+  }
 
   explicit Cell(int n) {
     for (int k = 0; k < 8; ++k) corners.col(k) = Eigen::Vector3d(k & 1, (k >> 1) & 1, (k >> 2) & 1);
@@ -106,11 +113,7 @@ TEST(EmbeddedAttachments, ACellFollowsItsPointsToWhereTheyAreAllAsked) {
   Cell cell(4);
   const Eigen::Vector3d shift(0.1, -0.2, 0.05);
   const Eigen::Matrix3Xd targets = cell.rest.colwise() + shift;
-  Eigen::Matrix3Xd lambda = Eigen::Matrix3Xd::Zero(3, 8);
-  const Eigen::VectorXd inverse_mass = Eigen::VectorXd::Ones(8);
-  for (int pass = 0; pass < 30; ++pass) {
-    solve_embedded_attachments(cell.corners, cell.points, targets, inverse_mass, 0.0, lambda);
-  }
+  for (int pass = 0; pass < 30; ++pass) cell.solve(targets, Eigen::VectorXd::Ones(8));
   Eigen::Matrix3Xd reached;
   embed(cell.points, cell.corners, reached);
   EXPECT_LT((reached - targets).colwise().norm().maxCoeff(), 1e-6 * shift.norm());
@@ -120,6 +123,7 @@ TEST(EmbeddedAttachments, PointsAreProjectedTogetherSoTheirOrderDoesNotMatter) {
   // Targets that disagree (noise about a shift): projected one after another, the last
   // points would have the corners their way; together, the order is only rounding.
   Cell cell(3);
+  const Eigen::Matrix3Xd before = cell.corners;
   std::mt19937 random(7);
   std::normal_distribution<double> noise(0.0, 0.05);
   Eigen::Matrix3Xd targets = cell.rest.colwise() + Eigen::Vector3d(0.1, 0, 0);
@@ -134,12 +138,10 @@ TEST(EmbeddedAttachments, PointsAreProjectedTogetherSoTheirOrderDoesNotMatter) {
     reversed.points.weight.col(v) = cell.points.weight.col(n - 1 - v);
     reversed_targets.col(v) = targets.col(n - 1 - v);
   }
-  const Eigen::VectorXd inverse_mass = Eigen::VectorXd::Ones(8);
-  Eigen::Matrix3Xd lambda = Eigen::Matrix3Xd::Zero(3, 8), reversed_lambda = lambda;
-  solve_embedded_attachments(cell.corners, cell.points, targets, inverse_mass, 0.0, lambda);
-  solve_embedded_attachments(reversed.corners, reversed.points, reversed_targets, inverse_mass, 0.0, reversed_lambda);
+  cell.solve(targets, Eigen::VectorXd::Ones(8));
+  reversed.solve(reversed_targets, Eigen::VectorXd::Ones(8));
   EXPECT_LT((cell.corners - reversed.corners).cwiseAbs().maxCoeff(), 1e-12);
-  EXPECT_GT((cell.corners.row(0).array() - Cell(3).corners.row(0).array()).minCoeff(), 0.05);  // All moved along.
+  EXPECT_GT((cell.corners.row(0) - before.row(0)).minCoeff(), 0.05);  // All moved along.
 }
 
 TEST(EmbeddedAttachments, APinnedCornerStaysAndEachMultiplierIsItsParticlesMove) {
@@ -148,12 +150,11 @@ TEST(EmbeddedAttachments, APinnedCornerStaysAndEachMultiplierIsItsParticlesMove)
   const Eigen::Matrix3Xd targets = cell.rest.colwise() + Eigen::Vector3d(0, 0, 0.2);
   Eigen::VectorXd inverse_mass = Eigen::VectorXd::Constant(8, 0.5);
   inverse_mass[0] = 0;
-  Eigen::Matrix3Xd lambda = Eigen::Matrix3Xd::Zero(3, 8);
-  solve_embedded_attachments(cell.corners, cell.points, targets, inverse_mass, 0.0, lambda);
+  cell.solve(targets, inverse_mass);
   EXPECT_EQ(cell.corners.col(0), before.col(0));
-  EXPECT_GT(lambda(2, 0), 0);  // The pinned corner still takes its share of the force.
+  EXPECT_GT(cell.lambda(2, 0), 0);  // The pinned corner still takes its share of the force.
   for (int k = 1; k < 8; ++k) {
-    EXPECT_NEAR((cell.corners(2, k) - before(2, k)), inverse_mass[k] * lambda(2, k), 1e-15);
+    EXPECT_NEAR((cell.corners(2, k) - before(2, k)), inverse_mass[k] * cell.lambda(2, k), 1e-15);
     EXPECT_GT(cell.corners(2, k), before(2, k));
   }
 }

@@ -10,26 +10,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <regex>
 
 #include "support/run.h"
+#include "train_test_util.h"
 
 namespace systole {
 namespace {
 
-/// An error `tune` prints ("as written", "tuned"): drives against the target. unit: %
-double printed_pct(const std::string& output, const std::string& which) {
-  std::smatch m;
-  const std::regex line(which + R"(: RMS ([0-9.e+-]+) % of the target's motion)");
-  return std::regex_search(output, m, line) ? std::stod(m[1]) : -1;
-}
-
-/// The tuned value of `parameter` in the report's parameter table. Same unit as the scene's.
-double tuned_value(const std::string& report, const std::string& parameter) {
-  std::smatch m;
-  const std::regex row("\\| " + parameter + " \\| [0-9.e+-]+ \\| ([0-9.e+-]+) \\|");
-  return std::regex_search(report, m, row) ? std::stod(m[1]) : -1;
-}
+using train::testing::printed_pct;
+using train::testing::tuned_value;
 
 void replace_once(std::string& text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);

@@ -8,17 +8,13 @@
 #include <regex>
 
 #include "support/run.h"
+#include "train_test_util.h"
 
 namespace systole {
 namespace {
 
-/// An error `tune` prints ("as written", "tuned"): drives against the target. unit: %
-double printed_pct(const std::string& output, const std::string& which) {
-  std::smatch m;
-  const std::regex line(which + R"(: RMS ([0-9.e+-]+) % of the target's motion)");
-  if (!std::regex_search(output, m, line)) return -1;
-  return std::stod(m[1]);
-}
+using train::testing::printed_pct;
+using train::testing::tuned_value;
 
 TEST(ExportRoundTrip, ASceneExportedAsACacheASeriesOrAGltfIsItsOwnTargetWithinItsKeyFrames) {
   const auto dir = test::scratch("export_round_trip");
@@ -53,13 +49,6 @@ TEST(ExportRoundTrip, ASceneExportedAsACacheASeriesOrAGltfIsItsOwnTargetWithinIt
     EXPECT_NE(test::read_file(dir / "t.yaml").find("the drives as written, the search found none closer"), std::string::npos);
     EXPECT_NE(test::read_file(dir / "report" / "report.md").find("was laid on the organ's 1257 surface vertices as it is"), std::string::npos);
   }
-}
-
-/// A number in `text` after `label` (e.g. "upper_pole.amplitude | 0.0234 | "), the tuned column.
-double tuned_value(const std::string& report, const std::string& parameter) {
-  std::smatch m;
-  const std::regex row("\\| " + parameter + " \\| [0-9.e+-]+ \\| ([0-9.e+-]+) \\|");
-  return std::regex_search(report, m, row) ? std::stod(m[1]) : -1;
 }
 
 TEST(ExportRoundTrip, TheKidneyIsTunedBackFromPerturbedDrivesThroughItsOwnCache) {

@@ -1,12 +1,13 @@
 #pragma once
 // Shared by the training tests: a small ball mesh written as OBJ, key frames of it, and
-// scenes around it, all in the test's scratch folder.
+// scenes around it, all in the test's scratch folder; the figures `tune` prints and reports.
 
 #include <Eigen/Core>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,22 @@ inline std::string ball_scene(const std::string& top_drive, const std::string& b
          target +
          "solver: {method: xpbd, dt: 1/120 s, substeps: 2}\n"
          "output: {width: 64, height: 48, fps: 30, duration: 1 s}\n";
+}
+
+/// An error `tune` prints ("as written", "tuned"): drives against the target; -1 when it
+/// printed none. unit: %
+inline double printed_pct(const std::string& output, const std::string& which) {
+  std::smatch m;
+  const std::regex line(which + R"(: RMS ([0-9.e+-]+) % of the target's motion)");
+  return std::regex_search(output, m, line) ? std::stod(m[1]) : -1;
+}
+
+/// The tuned value of `parameter` ("upper_pole.amplitude") in the report's parameter table;
+/// -1 when it has none. Same unit as the scene's.
+inline double tuned_value(const std::string& report, const std::string& parameter) {
+  std::smatch m;
+  const std::regex row("\\| " + parameter + " \\| [0-9.e+-]+ \\| ([0-9.e+-]+) \\|");
+  return std::regex_search(report, m, row) ? std::stod(m[1]) : -1;
 }
 
 }  // namespace systole::train::testing

@@ -31,12 +31,13 @@ inline Eigen::Vector3d solve_attachment(Eigen::Ref<Eigen::Vector3d> x, const Eig
 /// shared corners its own way and the last ones undo the first (the anatomical heart tied
 /// to its own motion stayed 140 % of that motion away). `lambda` gains each corner's
 /// averaged share, so lambda / h^2 stays the force the coupling exerts on each particle.
-/// Sequential sums: the same at any thread count.
+/// Sequential sums: the same at any thread count. `pull` (per corner, sum of w_k w_k dlambda_v)
+/// and `hold` (per corner, sum of w_k) are scratch of x's size, so a step does not allocate.
 inline void solve_embedded_attachments(Eigen::Matrix3Xd& x, const Embedding& e, const Eigen::Matrix3Xd& targets,
                                        const Eigen::VectorXd& inverse_mass, double alpha_tilde,
-                                       Eigen::Matrix3Xd& lambda) {
-  Eigen::Matrix3Xd pull = Eigen::Matrix3Xd::Zero(3, x.cols());  // Per corner, sum of w_k * w_k dlambda_v.
-  Eigen::VectorXd hold = Eigen::VectorXd::Zero(x.cols());       // Per corner, sum of w_k.
+                                       Eigen::Matrix3Xd& lambda, Eigen::Matrix3Xd& pull, Eigen::VectorXd& hold) {
+  pull.setZero();
+  hold.setZero();
   for (int v = 0; v < e.vertex_count(); ++v) {
     Eigen::Vector3d p = e.offset.cols() ? Eigen::Vector3d(e.offset.col(v)) : Eigen::Vector3d::Zero();
     double denominator = alpha_tilde;

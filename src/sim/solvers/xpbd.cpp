@@ -97,7 +97,7 @@ void solve_attachments(const Model& model, const Attachments* coupling, State& s
     constexpr int kPasses = 4;
     for (int pass = 0; pass < kPasses; ++pass) {
       solve_embedded_attachments(s.x, *coupling->points, s.attachment_target, model.inverse_mass, alpha_tilde,
-                                 s.attachment_lambda);
+                                 s.attachment_lambda, s.attachment_pull, s.attachment_hold);
     }
     return;
   }
