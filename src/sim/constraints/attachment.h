@@ -36,8 +36,8 @@ inline Eigen::Vector3d solve_attachment(Eigen::Ref<Eigen::Vector3d> x, const Eig
 inline void solve_embedded_attachments(Eigen::Matrix3Xd& x, const Embedding& e, const Eigen::Matrix3Xd& targets,
                                        const Eigen::VectorXd& inverse_mass, double alpha_tilde,
                                        Eigen::Matrix3Xd& lambda, Eigen::Matrix3Xd& pull, Eigen::VectorXd& hold) {
-  pull.setZero();
-  hold.setZero();
+  pull.setZero(3, x.cols());  // Sized once (State keeps them); zeroed every call.
+  hold.setZero(x.cols());
   for (int v = 0; v < e.vertex_count(); ++v) {
     Eigen::Vector3d p = e.offset.cols() ? Eigen::Vector3d(e.offset.col(v)) : Eigen::Vector3d::Zero();
     double denominator = alpha_tilde;
