@@ -9,20 +9,21 @@ set(SYSTOLE_MODULES
   "physics:"
   "scene:common,physics"
   "mesh:common,physics,scene"
-  "sim:common,physics,mesh"
-  "world:common,physics,scene,mesh,sim"
-  "train:common,physics,scene,mesh,sim,world,chart"
+  "electro:common,physics,mesh"
+  "sim:common,physics,mesh,electro"
+  "world:common,physics,scene,mesh,sim,electro"
+  "train:common,physics,scene,mesh,sim,electro,world,chart"
   "chart:common"
   "plot:common,chart"
   "render:common,physics,scene,mesh"
   "encode:common"
   "audio:common"
   "overlay:common,physics,scene,chart,plot"
-  "clip:common,physics,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio"
-  "batch:common,physics,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
-  "study:common,physics,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
-  "export:common,physics,scene,mesh,sim,world,chart,plot,render,encode,overlay,audio,clip"
-  "cli:common,physics,scene,mesh,sim,world,train,chart,plot,render,encode,overlay,audio,clip,batch,study,export")
+  "clip:common,physics,scene,mesh,sim,electro,world,chart,plot,render,encode,overlay,audio"
+  "batch:common,physics,scene,mesh,sim,electro,world,chart,plot,render,encode,overlay,audio,clip"
+  "study:common,physics,scene,mesh,sim,electro,world,chart,plot,render,encode,overlay,audio,clip"
+  "export:common,physics,scene,mesh,sim,electro,world,chart,plot,render,encode,overlay,audio,clip"
+  "cli:common,physics,scene,mesh,sim,electro,world,train,chart,plot,render,encode,overlay,audio,clip,batch,study,export")
 
 # The one place the simulator meets the scene: the translation of a scene into sim's own
 # parameter structs. No other file under src/sim/ may include scene/.

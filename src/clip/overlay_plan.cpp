@@ -13,6 +13,7 @@
 #include "scene/tree.h"
 #include "sim/drive.h"
 #include "sim/model.h"
+#include "world/heart_ecg.h"
 
 namespace systole::clip {
 namespace {
@@ -50,27 +51,6 @@ int region_index(const scene::Organ& organ, const std::string& name) {
   return -1;
 }
 
-/// The times a drive's beats start (contraction onset): cycle boundaries, or the seeded
-/// irregular ones, found by bisection on the (monotonic) cycle count. unit: s
-std::vector<double> beat_onsets_s(const sim::Drive& d, const std::vector<double>& beats, double ramp_s,
-                                  double clip_s) {
-  std::vector<double> out;
-  const double horizon = clip_s + 1.0;
-  const double total = sim::drive_cycles(d, horizon, ramp_s);
-  for (std::size_t k = 0;; ++k) {
-    const double c = beats.size() >= 2 ? (k < beats.size() ? beats[k] : beats.back() + double(k + 1 - beats.size()))
-                                       : double(k);
-    if (c > total) break;
-    double lo = 0, hi = horizon;
-    for (int i = 0; i < 60; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (sim::drive_cycles(d, mid, ramp_s) < c ? lo : hi) = mid;
-    }
-    out.push_back(d.delay_s + hi);
-  }
-  return out;
-}
-
 /// A region's beat boundaries (sim::Model::beat_boundaries); empty (regular beats) when it has none.
 const std::vector<double>& beats_of(const sim::Model& model, int region) {
   static const std::vector<double> regular;
@@ -104,7 +84,7 @@ void fill_ecg_trace(const scene::Organ& organ, const sim::Model& model, const sc
   trace.color = {120, 230, 150};
   trace.min = -0.45;
   trace.max = 1.15;
-  std::vector<double> r_times = beat_onsets_s(drive, beats, model.ramp_s, clip_s);
+  std::vector<double> r_times = sim::beat_start_times(drive, beats, model.ramp_s, clip_s + 1.0);
   for (double& r_time : r_times) r_time -= kElectromechanicalDelayS;
   // P waves: from the atrial region's beats when one is named, each depolarisation the
   // same delay before the contraction it triggers; atria faster than any sinus rhythm
@@ -115,7 +95,7 @@ void fill_ecg_trace(const scene::Organ& organ, const sim::Model& model, const sc
   const bool fibrillating = atria && atria->rate_hz > kFibrillationHz;
   std::vector<double> p_times;
   if (atria && !fibrillating) {
-    p_times = beat_onsets_s(*atria, atrial_beats, model.ramp_s, clip_s);
+    p_times = sim::beat_start_times(*atria, atrial_beats, model.ramp_s, clip_s + 1.0);
     for (double& p_time : p_times) p_time -= kElectromechanicalDelayS;
   }
   for (std::size_t i = 0; i < trace.values.size(); ++i) {
@@ -125,6 +105,21 @@ void fill_ecg_trace(const scene::Organ& organ, const sim::Model& model, const sc
       trace.values[i] += kFibrillationMv * (2 * sim::activation(*atria, time, model.ramp_s, atrial_beats) - 1);
     }
   }
+}
+
+/// A lead of the organ's computed ECG (world/heart_ecg.h); trace.values has the sample count.
+void fill_computed_ecg_trace(const world::OrganBody& body, const scene::TraceOverlay& t, double clip_s,
+                             overlay::Trace& trace) {
+  const std::optional<electro::Ecg> ecg = world::organ_ecg(body, clip_s + 1.0 / kSignalRateHz, kSignalRateHz);
+  const std::vector<double>& lead = *ecg->lead(t.lead);
+  trace.title = "ECG lead " + t.lead;
+  trace.unit = "mV";
+  trace.color = {120, 230, 150};
+  for (std::size_t i = 0; i < trace.values.size(); ++i) trace.values[i] = i < lead.size() ? lead[i] : kNaN;
+  const auto [lo, hi] = std::minmax_element(lead.begin(), lead.end());
+  const double margin = 0.1 * std::max(*hi - *lo, 0.2);
+  trace.min = *lo - margin;
+  trace.max = *hi + margin;
 }
 
 }  // namespace
@@ -266,6 +261,8 @@ void OverlayPlan::plan_trace(const scene::Scene& scene, const world::World& worl
     const auto& model = world.organs[static_cast<std::size_t>(o)].model;
     if (t.signal == scene::TraceSignal::kActivation) {
       fill_activation_trace(organ, model, t, trace);
+    } else if (model.excitation) {
+      fill_computed_ecg_trace(world.organs[static_cast<std::size_t>(o)], t, clip_s, trace);
     } else {
       fill_ecg_trace(organ, model, t, clip_s, trace);
     }

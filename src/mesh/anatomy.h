@@ -21,6 +21,13 @@ struct Myocardium {
   std::vector<int> node_part;          ///< Per node: index into the mesh's part_names.
   std::vector<std::pair<int, int>> node_also_in;  ///< (node, part): other parts a node belongs to.
   std::vector<double> node_volume_m3;  ///< Per node: its share of the wall's volume. unit: m^3
+  /// Per node: the wall it lies in (0 the left heart's, 1 the right heart's, then the
+  /// vessels', in the order they were built), and where in it: along the meridian from the
+  /// apex (0) to the far pole (1), and across the wall from the lining (0) to the outside (1).
+  /// The conduction system (electro/conduction.h) finds the endocardium and the base by them.
+  std::vector<int> node_wall;
+  std::vector<double> node_along, node_depth;
+  double annulus_along = 0;  ///< The atrioventricular annulus's place along the hearts' meridians. unit: 1
   std::vector<std::pair<int, int>> springs;
   /// Per spring: its share of the cells' volume over its rest length squared, divided by the
   /// mean, so a uniform material gives each spring the stiffness its cells need. unit: 1
@@ -76,6 +83,10 @@ struct VentricleLandmarks {
 
 struct Anatomy {
   Myocardium myocardium;
+  /// The body's directions in the organ's coordinates, as columns: the patient's left, head
+  /// and front (the generator's +X, +Y, +Z, turned by the scene's rotation). The ECG's
+  /// electrodes sit on a torso placed about them (electro/leads.h).
+  Eigen::Matrix3d body_axes = Eigen::Matrix3d::Identity();
   std::vector<Cavity> cavities;
   std::vector<Valve> valves;
   VentricleLandmarks left_ventricle;

@@ -106,6 +106,7 @@ void place(OrganMesh& mesh, const scene::MeshSource& source, const scene::Transf
   auto move = [&](Eigen::Vector3d& p) { p = transform.translate_m + rotation * (transform.scale * (p * source.unit_m - centre)); };
   for (Eigen::Vector3d& p : mesh.surface.positions) move(p);
   for (Eigen::Vector3d& p : mesh.anatomy.myocardium.nodes) move(p);
+  mesh.anatomy.body_axes = rotation * mesh.anatomy.body_axes;
   for (Valve& valve : mesh.anatomy.valves) {
     for (Eigen::Vector3d& p : valve.open_positions) move(p);
   }

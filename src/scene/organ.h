@@ -193,6 +193,17 @@ struct Blood {
   double chordae = 0;               ///< The share of the shut mitral valve's load its chordae carry. unit: 1
 };
 
+/// A bundle branch that does not conduct (docs/electrophysiology.md).
+enum class BundleBranchBlock { kNone, kLeft, kRight };
+
+/// The heart's own conduction system (electro/conduction.h): when enabled, every beat starts
+/// at the sinus node and reaches each part of the muscle when the excitation does; absent:
+/// each region's drive starts at its own delay.
+struct Electrophysiology {
+  bool enabled = false;  ///< The scene has the block.
+  BundleBranchBlock block = BundleBranchBlock::kNone;
+};
+
 struct Organ {
   std::string name;
   MeshSource mesh;
@@ -200,6 +211,7 @@ struct Organ {
   Material material;
   Body body;
   Blood blood;
+  Electrophysiology electrophysiology;
   std::vector<Region> regions;
   Target target;                ///< enabled: `systole tune` fits the regions to it.
   ColorBy color_by = ColorBy::kMaterial;

@@ -87,7 +87,7 @@ struct LegendOverlay {
 enum class TraceSignal {
   kVolume,      ///< The organ's enclosed volume, as simulated.
   kActivation,  ///< A region's drive phi(t).
-  kEcg,         ///< A synthetic P-QRS-T complex at each beat of a region's drive.
+  kEcg,         ///< A computed lead (an organ with electrophysiology), else a synthetic P-QRS-T at each beat of a region's drive.
 };
 
 struct TraceOverlay {
@@ -95,6 +95,7 @@ struct TraceOverlay {
   std::string organ;                 ///< Empty: the first organ.
   std::string region;                ///< kActivation, kEcg: the region whose drive is shown (kEcg: the ventricles').
   std::string atria;                 ///< kEcg: a region whose beats give the P waves; empty: 160 ms before each R.
+  std::string lead = "II";           ///< kEcg of an organ with electrophysiology: the computed lead shown.
   std::string chamber;               ///< kVolume: a cavity of a generated anatomy; empty: the organ's enclosed volume.
   Corner position = Corner::kBottomRight;
   int width_px = 360, height_px = 110;  ///< unit: px at 720 lines

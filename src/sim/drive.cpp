@@ -122,6 +122,24 @@ std::vector<double> irregular_beats(double irregularity, std::uint64_t seed, std
   return b;
 }
 
+std::vector<double> beat_start_times(const Drive& d, const std::vector<double>& beats, double ramp_s,
+                                     double until_s) {
+  std::vector<double> out;
+  const double total = drive_cycles(d, until_s, ramp_s);
+  for (std::size_t k = 0;; ++k) {
+    const double c = beats.size() >= 2 ? (k < beats.size() ? beats[k] : beats.back() + double(k + 1 - beats.size()))
+                                       : double(k);
+    if (c > total) break;
+    double lo = 0, hi = until_s;
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (drive_cycles(d, mid, ramp_s) < c ? lo : hi) = mid;
+    }
+    out.push_back(d.delay_s + hi);
+  }
+  return out;
+}
+
 double highest_frequency_hz(const Drive& drive) {
   const double rate = std::max(drive.rate_hz, drive.rate_end_hz);
   switch (drive.waveform) {

@@ -34,6 +34,12 @@ std::vector<double> irregular_beats(double irregularity, std::uint64_t seed, std
 void region_contractions(const std::vector<RegionParams>& regions, const std::vector<std::vector<double>>& beats,
                          double t_s, double ramp_s, Eigen::VectorXd& out);
 
+/// The times a drive's beats start (its cycle boundaries, or the seeded irregular ones in
+/// `beats`, delay applied) up to `until_s`, found by bisection on the (monotonic) cycle
+/// count. unit: s
+std::vector<double> beat_start_times(const Drive& drive, const std::vector<double>& beats, double ramp_s,
+                                     double until_s);
+
 /// Highest frequency present in the drive at any time: rate x highest harmonic, or the
 /// sharpest template's equivalent. unit: Hz
 double highest_frequency_hz(const Drive& drive);

@@ -28,8 +28,10 @@ namespace systole::sim {
 /// each other's shear; a tension lets the layer that pulls harder win, which is what twists a
 /// ventricle (docs/anatomy.md). unit: m
 inline double driven_rest_length(const Springs& sp, int j, const Eigen::VectorXd& contraction) {
-  const double ca = sp.region_a[j] >= 0 ? contraction[sp.region_a[j]] : 0.0;
-  const double cb = sp.region_b[j] >= 0 ? contraction[sp.region_b[j]] : 0.0;
+  const int ia = sp.contraction_a.empty() ? sp.region_a[j] : sp.contraction_a[j];
+  const int ib = sp.contraction_b.empty() ? sp.region_b[j] : sp.contraction_b[j];
+  const double ca = ia >= 0 ? contraction[ia] : 0.0;
+  const double cb = ib >= 0 ? contraction[ib] : 0.0;
   const double c = 0.5 * (ca + cb);
   if (sp.fibre_share.empty() || sp.fibre_share[j] < 0) return sp.rest_m[j] * (1.0 - c);
   const double fibre = std::max(0.2, 1.0 - c), cross = std::max(0.2, 1.0 - sp.cross_fibre[j] * c);

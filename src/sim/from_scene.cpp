@@ -68,6 +68,10 @@ OrganParams organ_params(const scene::Organ& organ) {
   p.blood.pulmonary_elastance_Pa_per_m3 = blood.pulmonary_elastance_Pa_per_m3;
   p.blood.filling_Pa = blood.filling_pressure_Pa;
   p.blood.chordae = blood.chordae;
+  p.electrophysiology = organ.electrophysiology.enabled;
+  p.conduction.block = organ.electrophysiology.block == scene::BundleBranchBlock::kLeft    ? electro::Block::kLeftBundle
+                       : organ.electrophysiology.block == scene::BundleBranchBlock::kRight ? electro::Block::kRightBundle
+                                                                                            : electro::Block::kNone;
   p.regions = region_params(organ.regions);
   return p;
 }

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct Springs {
   std::vector<double> compliance_m_per_N;  ///< 1 / stiffness. unit: m/N
   std::vector<double> damping_s;         ///< Stiffness-proportional damping time. unit: s
   std::vector<int> region_a, region_b;   ///< Drive region of each end (-1: undriven).
+  /// With electrophysiology: each end's entry in State::region_contraction, its region's
+  /// drive started when the excitation reaches it (Model::excited); empty: region_a, region_b.
+  std::vector<int> contraction_a, contraction_b;
   /// Muscle with fibres (a myocardium): per spring, the squared cosine of its direction with
   /// the fibre and with the sheet normal, and the cross-fibre ratio k; a fibre share below 0,
   /// or empty vectors: no fibres (sim/forces.h, driven_rest_length).
@@ -95,6 +99,17 @@ struct KinematicRegion {
   std::vector<PathKey> motion;  ///< Offsets from the rest positions over time.
 };
 
+/// With electrophysiology (electro/conduction.h): contraction slots, each a region's drive
+/// started when the excitation reaches the particles that use it, delay_s after the sinus
+/// node fires (to the millisecond). Slot k's contraction is
+/// State::region_contraction[regions.size() + k].
+struct ExcitedDrives {
+  std::vector<int> region;
+  std::vector<double> delay_s;  ///< unit: s
+
+  int size() const { return static_cast<int>(region.size()); }
+};
+
 struct Model {
   std::string name;                         ///< The organ's name, for messages.
   Method method = Method::kXpbd;
@@ -107,6 +122,9 @@ struct Model {
   VolumeConstraint volume;
   Circulation circulation;                  ///< The ventricles' blood (anatomical heart); empty: none.
   std::vector<RegionParams> regions;       ///< Drives by region index.
+  ExcitedDrives excited;                    ///< Empty without electrophysiology.
+  /// The excitation that times them (per particle: the body is the myocardium); null without.
+  std::shared_ptr<const electro::Excitation> excitation;
   /// Per region: the beat boundaries in cycles when its drive is irregular (seeded), else empty.
   std::vector<std::vector<double>> beat_boundaries;
   std::vector<int> vertex_region;           ///< Per particle; -1 = undriven body.

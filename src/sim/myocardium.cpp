@@ -1,6 +1,7 @@
 #include "sim/myocardium.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "sim/model.h"
@@ -119,6 +120,29 @@ Circulation circulation_of(const OrganParams& organ, const mesh::Anatomy& anatom
   return circulation;
 }
 
+/// Each driven spring end takes its region's drive from when the excitation reaches its
+/// particle (to the millisecond: finer than any solver step, and the ends of one front
+/// share a slot).
+void excite_drives(Model& model, const electro::Excitation& excitation) {
+  std::map<std::pair<int, long>, int> slot_of;
+  const auto slot = [&](int particle) {
+    const int r = model.vertex_region[static_cast<std::size_t>(particle)];
+    const double t = excitation.activation_s[static_cast<std::size_t>(particle)];
+    if (r < 0 || model.regions[static_cast<std::size_t>(r)].drive.waveform == Waveform::kNone || std::isnan(t)) return r;
+    const auto [it, added] = slot_of.try_emplace({r, std::lround(t * 1000)}, model.excited.size());
+    if (added) {
+      model.excited.region.push_back(r);
+      model.excited.delay_s.push_back(double(std::lround(t * 1000)) / 1000);
+    }
+    return static_cast<int>(model.regions.size()) + it->second;
+  };
+  Springs& sp = model.springs;
+  for (int j = 0; j < sp.size(); ++j) {
+    sp.contraction_a.push_back(slot(sp.a[j]));
+    sp.contraction_b.push_back(slot(sp.b[j]));
+  }
+}
+
 }  // namespace
 
 ReducedBody build_myocardium_model(const OrganParams& organ, const mesh::OrganGeometry& geometry,
@@ -162,6 +186,10 @@ ReducedBody build_myocardium_model(const OrganParams& organ, const mesh::OrganGe
     e.offset.col(v) = geometry.mesh.surface.positions[v] - carried;
   }
   body.model = build_model(organ, std::move(parts), options);
+  if (organ.electrophysiology) {
+    body.model.excitation = std::make_shared<const electro::Excitation>(electro::excite(geometry.mesh, organ.conduction));
+    excite_drives(body.model, *body.model.excitation);
+  }
   body.model.circulation =
       circulation_of(organ, geometry.mesh.anatomy, geometry.mesh.surface.positions, e, body.model.rest_positions);
   return body;

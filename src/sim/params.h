@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "electro/conduction.h"
 #include "physics/drive.h"
 #include "physics/world.h"
 
@@ -79,6 +80,9 @@ struct OrganParams {
   std::string where;  ///< "file:line:column: " of the organ in its scene, for messages; may be empty.
   BodyParams body;
   BloodParams blood;
+  /// The heart's own conduction system times each particle's beat (electro/conduction.h).
+  bool electrophysiology = false;
+  electro::ConductionParams conduction;
   std::vector<RegionParams> regions;
 };
 

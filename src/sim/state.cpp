@@ -9,7 +9,7 @@ State initial_state(const Model& model) {
   s.v = Eigen::Matrix3Xd::Zero(3, n);
   s.spring_lambda = Eigen::VectorXd::Zero(model.springs.size());
   s.x_prev = s.x;
-  s.region_contraction = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.regions.size()));
+  s.region_contraction = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.regions.size()) + model.excited.size());
   s.volume_gradient = Eigen::Matrix3Xd::Zero(3, model.volume.enabled ? n : 0);
   s.force = Eigen::Matrix3Xd::Zero(3, n);
   s.attachment_lambda = Eigen::Matrix3Xd::Zero(3, n);  // Written only while a coupling is passed to step.

@@ -8,6 +8,7 @@
 
 #include "common/error.h"
 #include "world/frame_source.h"
+#include "world/heart_ecg.h"
 #include "world/world.h"
 
 namespace systole::study {
@@ -77,6 +78,14 @@ std::vector<std::string> PhysiologyReport::outside_normal() const {
   check("twist", twist_deg, kTwist);
   check("ejection time", ejection_pct, kEjectionShare);
   check("isovolumic relaxation", isovolumic_relaxation_ms, kIsovolumicRelaxation);
+  if (has_ecg) {
+    check("PR interval", 1000 * ecg.pr_s, kPrInterval);
+    check("QRS duration", 1000 * ecg.qrs_s, kQrsDuration);
+    check("QTc", 1000 * ecg.qtc_s, kQtc);
+    check("QRS axis", ecg.axis_deg, kQrsAxis);
+    check("R/S transition", ecg.transition, kTransition);
+    check("electromechanical delay", electromechanical_delay_ms, kElectromechanicalDelay);
+  }
   return out;
 }
 
@@ -274,6 +283,35 @@ void measure_shape(const mesh::Anatomy& anatomy, const std::vector<Eigen::Matrix
   }
 }
 
+/// When the ventricles' contraction starts after the beat's: the left ventricle's delay, or
+/// with a conduction system the first ventricular muscle's excitation. unit: s
+double ventricles_activate_s(const sim::Model& model, const sim::RegionParams& ventricle) {
+  if (!model.excitation) return ventricle.drive.delay_s;
+  const electro::Excitation& ex = *model.excitation;
+  double first = HUGE_VAL;
+  for (std::size_t i = 0; i < ex.tissue.size(); ++i) {
+    if (ex.tissue[i] == electro::Tissue::kVentricle && !std::isnan(ex.activation_s[i])) first = std::min(first, ex.activation_s[i]);
+  }
+  return first;
+}
+
+/// The measured beat's ECG (from its sinus firing to the next one's) and its QRS onset to
+/// the mitral valve's closure.
+void measure_ecg(const world::OrganBody& body, int settle_beats, PhysiologyReport& report) {
+  const double beat_start = settle_beats * report.beat_s;
+  const std::optional<electro::Ecg> ecg = world::organ_ecg(body, beat_start + 2 * report.beat_s);
+  // A little before the sinus node fires: the P wave's onset is at it.
+  const double lead_in = 0.02;
+  report.ecg = electro::measure_beat(*ecg, beat_start - lead_in, beat_start + report.beat_s - lead_in, report.beat_s);
+  report.has_ecg = true;
+  for (const ValveEvent& e : report.valve_events) {
+    if (e.valve != "mitral_valve" || e.opens) continue;
+    const double closes_s = report.measured_from_s + e.after_activation_ms / 1000;
+    report.electromechanical_delay_ms = 1000 * (closes_s - report.ecg.qrs_onset_s);
+    break;
+  }
+}
+
 }  // namespace
 
 PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats) {
@@ -290,7 +328,7 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   const sim::RegionParams& ventricle = left_ventricle_drive(scene, body.model);
   report.beat_s = 1.0 / ventricle.drive.rate_hz;
   report.frame_s = world.frame_s;
-  report.measured_from_s = settle_beats * report.beat_s + ventricle.drive.delay_s;
+  report.measured_from_s = settle_beats * report.beat_s + ventricles_activate_s(body.model, ventricle);
   const mesh::Anatomy& anatomy = body.geometry.mesh.anatomy;
 
   // One frame before the beat to one after it: the valves need the flow on both sides.
@@ -306,8 +344,38 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   const double aortic_closes = measure_valves(anatomy, body, rec, report);
   const auto [ed, es] = measure_volumes(anatomy, rec, beat, aortic_closes, report);
   measure_shape(anatomy, rec.shapes, beat, ed, es, report);
+  if (body.model.excitation) measure_ecg(body, settle_beats, report);
   return report;
 }
+
+namespace {
+
+/// The computed ECG's figures, each against its normal range.
+std::string ecg_text(const PhysiologyReport& r) {
+  std::string out = "  computed ECG (the measured beat):\n";
+  char line[256];
+  const electro::BeatMeasures& e = r.ecg;
+  const auto figure = [&](const char* name, double value, const char* unit, const NormalRange& range) {
+    std::snprintf(line, sizeof line, "    %-24s %7.1f %-4s normal %g-%g %s (%s)\n", name, value, unit, range.low, range.high,
+                  range.holds(value) ? "  " : "!!", range.source);
+    out += line;
+  };
+  figure("PR interval", 1000 * e.pr_s, "ms", kPrInterval);
+  figure("QRS duration", 1000 * e.qrs_s, "ms", kQrsDuration);
+  std::snprintf(line, sizeof line, "    %-24s %7.1f ms\n", "QT interval", 1000 * e.qt_s);
+  out += line;
+  figure("QTc (Bazett)", 1000 * e.qtc_s, "ms", kQtc);
+  figure("frontal QRS axis", e.axis_deg, "deg", kQrsAxis);
+  figure("R/S transition (V1-V6)", e.transition, "", kTransition);
+  if (std::isnan(r.electromechanical_delay_ms)) {
+    out += "    electromechanical delay  not measured (the mitral valve does not close in the beat)\n";
+  } else {
+    figure("QRS onset to mitral close", r.electromechanical_delay_ms, "ms", kElectromechanicalDelay);
+  }
+  return out;
+}
+
+}  // namespace
 
 std::string physiology_text(const PhysiologyReport& r) {
   std::string out;
@@ -354,6 +422,7 @@ std::string physiology_text(const PhysiologyReport& r) {
     std::snprintf(line, sizeof line, "    %6.0f ms  %s %s\n", e.after_activation_ms, e.valve.c_str(), e.opens ? "opens" : "closes");
     out += line;
   }
+  if (r.has_ecg) out += ecg_text(r);
   const auto outside = r.outside_normal();
   if (outside.empty()) {
     out += "  every figure within its normal range\n";

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "electro/ecg_measure.h"
 #include "scene/scene.h"
 
 namespace systole::study {
@@ -34,6 +35,17 @@ inline const NormalRange kEjectionShare{25, 40, "Weissler 1968; Guyton & Hall ch
 /// Isovolumic relaxation: the aortic valve's closure to the mitral valve's opening, when the
 /// ventricle relaxes with both shut. Normal means by age 50-87 ms, +-2 SD 32-101 ms.
 inline const NormalRange kIsovolumicRelaxation{50, 100, "Nagueh et al. 2009, J Am Soc Echocardiogr 22:107 (IVRT by age)"};
+
+/// The resting 12-lead ECG of a normal adult (docs/electrophysiology.md): the AHA/ACCF/HRS
+/// recommendations for the standardization and interpretation of the electrocardiogram
+/// (Surawicz et al. 2009, Circulation 119:e235; Rautaharju et al. 2009, Circulation 119:e241).
+inline const NormalRange kPrInterval{120, 200, "Surawicz 2009 (PR 120-200 ms)"};
+inline const NormalRange kQrsDuration{80, 110, "Surawicz 2009 (QRS under 110 ms; 120 and more a bundle branch block)"};
+inline const NormalRange kQtc{350, 450, "Rautaharju 2009 (QTc by Bazett, 350-450 ms)"};
+inline const NormalRange kQrsAxis{-30, 90, "Surawicz 2009 (frontal QRS axis -30 to +90 deg)"};
+inline const NormalRange kTransition{2, 4, "Surawicz 2009 (precordial R/S transition V2-V4)"};
+/// QRS onset to the mitral valve's closure: the Q-M1 interval of phonocardiography.
+inline const NormalRange kElectromechanicalDelay{20, 80, "Leatham 1954, Lancet 267:607 (Q to the mitral first sound, 20-80 ms)"};
 
 struct ChamberVolume {
   std::string name;          ///< "left_ventricle", ...
@@ -81,6 +93,11 @@ struct PhysiologyReport {
   /// The aortic valve's closure to the mitral valve's next opening, to the frame (with
   /// blood, to the solver's step; NaN when either is missing). unit: ms
   double isovolumic_relaxation_ms = std::numeric_limits<double>::quiet_NaN();
+  /// With electrophysiology, the measured beat's computed ECG (electro/ecg_measure.h); the
+  /// electromechanical delay is its QRS onset to the mitral valve's closure (NaN without).
+  bool has_ecg = false;
+  electro::BeatMeasures ecg;
+  double electromechanical_delay_ms = std::numeric_limits<double>::quiet_NaN();
   /// Names of the figures outside their normal range (empty: a normal heart).
   std::vector<std::string> outside_normal() const;
 };

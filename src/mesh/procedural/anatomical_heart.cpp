@@ -437,6 +437,7 @@ void Heart::add_coronary(const Wall& wall, const std::vector<std::pair<double, d
 
 void Heart::add_cavities_and_landmarks(const Wall& left, const Wall& right) {
   Anatomy& anatomy = builder_.mesh().anatomy;
+  anatomy.myocardium.annulus_along = kAnnulusAlong;
   for (const Wall* wall : {&left, &right}) {
     const bool is_left = wall == &left;
     const int annulus = wall->draw_row_of_key(kAnnulusKey), last = wall->draw_rows() - 1;

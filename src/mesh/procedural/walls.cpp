@@ -35,6 +35,7 @@ Wall::Wall(HeartBuilder& builder, WallShape shape, const PartsAt& parts) : build
   const int keys = static_cast<int>(shape_.height.size());
   rows_ = (keys - 1) * shape_.rows_per_key;
   first_node_ = -1;
+  index_ = builder_.begin_wall();
   add_nodes(parts);
   add_cells();
   draw_rows_ = (keys - 1) * shape_.draw_rows_per_key + 1;
@@ -58,7 +59,7 @@ void Wall::add_nodes(const PartsAt& parts) {
           fibre = std::cos(helix) * circumferential + std::sin(helix) * normal.cross(circumferential);
         }
         const double cross = shape_.cross_fibre ? shape_.cross_fibre(p.across, p.along) : 0.0;
-        const int n = builder_.add_node(point(p), parts(p, false), fibre, normal, cross, bool(shape_.helix_rad));
+        const int n = builder_.add_node(point(p), parts(p, false), fibre, normal, cross, bool(shape_.helix_rad), index_, p);
         if (first_node_ < 0) first_node_ = n;
       }
     }
@@ -365,8 +366,11 @@ std::optional<Eigen::Vector3i> HeartBuilder::add_triangle_facing(int a, int b, i
 int HeartBuilder::part(const std::string& name) const { return mesh_.part_index(name); }
 
 int HeartBuilder::add_node(const Vec& x, const std::vector<int>& parts, const Vec& fibre, const Vec& normal,
-                           double cross_fibre, bool active) {
+                           double cross_fibre, bool active, int wall, const WallPoint& at) {
   Myocardium& m = mesh_.anatomy.myocardium;
+  m.node_wall.push_back(wall);
+  m.node_along.push_back(at.along);
+  m.node_depth.push_back(at.across);
   for (std::size_t i = 1; i < parts.size(); ++i) m.node_also_in.emplace_back(static_cast<int>(m.nodes.size()), parts[i]);
   m.nodes.push_back(x);
   m.node_part.push_back(parts.front());

@@ -112,6 +112,7 @@ class Wall {
   WallShape shape_;
   int rows_ = 0;        ///< Lattice row intervals between the ends.
   int first_node_ = 0;
+  int index_ = 0;  ///< This wall's number in the builder.
   int draw_rows_ = 0;
   std::vector<int> drawn_;  ///< [across][row][column] -> vertex.
   std::vector<std::vector<Eigen::Vector3i>> lining_band_;  ///< Per draw row interval.
@@ -124,8 +125,11 @@ class HeartBuilder {
  public:
   explicit HeartBuilder(std::vector<std::string> part_names);
 
+  /// A lattice node of wall `wall` (numbered by begin_wall) at place `at` in it.
   int add_node(const Vec& x, const std::vector<int>& parts, const Vec& fibre, const Vec& normal, double cross_fibre,
-               bool active);
+               bool active, int wall, const WallPoint& at);
+  /// The next wall's number (0, 1, ... in the order walls are built).
+  int begin_wall() { return walls_++; }
   /// A cell's corners: its volume goes to them and every pair of them is a spring.
   void add_cell(const std::vector<int>& corners);
   /// A drawn vertex at x carried by `nodes`/`weights`, in `parts` (first part first).
@@ -151,6 +155,7 @@ class HeartBuilder {
   std::vector<char> active_;
   std::vector<std::vector<int>> cells_;
   std::vector<std::pair<int, int>> glue_;
+  int walls_ = 0;
 };
 
 }  // namespace systole::mesh::procedural

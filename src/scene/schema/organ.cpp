@@ -394,6 +394,55 @@ ValueSpec<Material> material_spec() {
   });
 }
 
+ValueSpec<Electrophysiology> electrophysiology_spec() {
+  return map<Electrophysiology>(
+      {
+          field("block",
+                choice<BundleBranchBlock>({{"none", BundleBranchBlock::kNone},
+                                           {"left_bundle_branch", BundleBranchBlock::kLeft},
+                                           {"right_bundle_branch", BundleBranchBlock::kRight}}),
+                &Electrophysiology::block,
+                "A bundle branch that does not conduct: its ventricle is reached late, through the septum's "
+                "muscle (left or right bundle branch block)."),
+      },
+      [](const Node&, Electrophysiology& e, const std::string&, const Context&) { e.enabled = true; });
+}
+
+Field<Organ> electrophysiology_field() {
+  return field("electrophysiology", electrophysiology_spec(), &Organ::electrophysiology,
+               "The heart's own conduction system: the sinus node starts every beat, and each part of the "
+               "muscle contracts when the excitation reaches it (docs/electrophysiology.md), which also "
+               "makes a computed 12-lead ECG. Needs `procedural: anatomical_heart`; a driven region may "
+               "not give a `delay`, and every driven region beats at one rate (the sinus rate).")
+      .shown_default("none");
+}
+
+/// With a conduction system the sinus node times every beat: only the generated heart has
+/// one, a region's own delay would contradict it, and all driven regions beat at its rate.
+void check_electrophysiology(const Node& node, const Organ& o, const std::string& path) {
+  if (o.mesh.procedural != "anatomical_heart")
+    fail(origin_of(node, "electrophysiology"), path + ".electrophysiology",
+         "a conduction system needs the generated myocardium: `mesh: {procedural: anatomical_heart}`");
+  const Node* regions = node.find("regions");
+  const Region* paced = nullptr;
+  for (std::size_t i = 0; regions && i < o.regions.size(); ++i) {
+    const Region& r = o.regions[i];
+    if (r.drive.waveform == physics::Waveform::kNone) continue;
+    const Node& item = regions->items[i];
+    const std::string at = path + ".regions[" + std::to_string(i) + "].drive";
+    const Node* drive = item.find("drive");
+    if (drive && drive->find("delay"))
+      fail(origin_of(*drive, "delay"), at + ".delay",
+           "with `electrophysiology` the conduction system starts each part's beat when the excitation reaches "
+           "it; remove the region's delay");
+    if (paced && (r.drive.rate_hz != paced->drive.rate_hz || r.drive.rate_end_hz != paced->drive.rate_end_hz))
+      fail(drive ? origin_of(*drive, "rate") : origin_of(item, "drive"), at + ".rate",
+           "with `electrophysiology` every driven region beats at the sinus rate; region '" + r.name +
+               "' differs from '" + paced->name + "'");
+    if (!paced) paced = &r;
+  }
+}
+
 }  // namespace
 
 ValueSpec<Organ> organ_spec() {
@@ -431,6 +480,7 @@ ValueSpec<Organ> organ_spec() {
                 "shut it keeps the cavity's volume, and its pressure opens them (Wiggers' four phases; "
                 "docs/anatomy.md, \"Blood\"). Needs the generated myocardium and solver.method: projective.")
               .shown_default("none"),
+          electrophysiology_field(),
           field("regions", list(region_spec(), 0, 256, "list of regions"), &Organ::regions,
                 "Parts with their own rhythm and stiffness, applied in order."),
           field("collider", boolean(), &Organ::collider,
@@ -443,6 +493,7 @@ ValueSpec<Organ> organ_spec() {
       [](const Node& node, Organ& o, const std::string& path, const Context&) {
         o.origin = node.origin;
         check_target_names(node, o, path);
+        if (o.electrophysiology.enabled) check_electrophysiology(node, o, path);
         if (!o.has_color_range)
           o.color_range = o.color_by == ColorBy::kActivation ? Eigen::Vector2d(0, 1) : Eigen::Vector2d(-0.15, 0.15);
         for (std::size_t i = 0; i < o.regions.size(); ++i)

@@ -23,6 +23,13 @@ ValueSpec<std::string> display_text() {
   return spec;
 }
 
+/// A standard ECG lead's name.
+ValueSpec<std::string> ecg_lead() {
+  std::vector<std::pair<std::string, std::string>> leads;
+  for (const char* name : {"I", "II", "III", "aVR", "aVL", "aVF", "V1", "V2", "V3", "V4", "V5", "V6"}) leads.emplace_back(name, name);
+  return choice<std::string>(leads);
+}
+
 ValueSpec<Corner> corner() {
   return choice<Corner>({{"top-left", Corner::kTopLeft},
                          {"top-right", Corner::kTopRight},
@@ -132,8 +139,9 @@ ValueSpec<Overlay> overlay_spec() {
                                      {"activation", TraceSignal::kActivation},
                                      {"ecg", TraceSignal::kEcg}}),
                 &TraceOverlay::signal,
-                "`volume`: the organ's enclosed volume as simulated; `activation`: a region's drive phi(t); `ecg`: a "
-                "synthetic P-QRS-T at each beat of a region's drive.")
+                "`volume`: the organ's enclosed volume as simulated; `activation`: a region's drive phi(t); `ecg`: "
+                "the organ's computed ECG lead when it has `electrophysiology`, else a synthetic P-QRS-T at each beat "
+                "of a region's drive.")
               .required(),
           field("organ", name_text(), &TraceOverlay::organ, "The organ traced.").shown_default("the first organ"),
           field("region", name_text(), &TraceOverlay::region,
@@ -142,6 +150,9 @@ ValueSpec<Overlay> overlay_spec() {
           field("atria", name_text(), &TraceOverlay::atria,
                 "`ecg`: the atrial region whose beats give the P waves; faster than 4 Hz (flutter, fibrillation): no P "
                 "waves but f-waves following its drive. Default: a P wave 160 ms before each R."),
+          field("lead", ecg_lead(), &TraceOverlay::lead,
+                "`ecg` of an organ with `electrophysiology`: the computed lead shown.")
+              .shown_default("II"),
           field("chamber", name_text(), &TraceOverlay::chamber,
                 "`volume`: a chamber of a generated anatomy (`anatomical_heart`: left_ventricle, right_ventricle, "
                 "left_atrium, right_atrium): the blood it holds, from its lining with the valve annuli capped, instead "
@@ -155,14 +166,13 @@ ValueSpec<Overlay> overlay_spec() {
       },
       [](const Node& node, TraceOverlay& t, const std::string& path, const Context&) {
         t.origin = node.origin;
-        const bool needs_region = t.signal != TraceSignal::kVolume;
-        if (needs_region && t.region.empty())
-          fail(node.origin, path, "signal activation and ecg need a region: the driven region whose beats are shown");
+        if (t.signal != TraceSignal::kEcg && node.find("lead"))
+          fail(origin_of(node, "lead"), join(path, "lead"), "lead applies to signal ecg only");
         if (t.signal != TraceSignal::kVolume && !t.chamber.empty())
           fail(origin_of(node, "chamber"), join(path, "chamber"), "chamber applies to signal volume only");
         if (t.signal != TraceSignal::kEcg && !t.atria.empty())
           fail(origin_of(node, "atria"), join(path, "atria"), "atria applies to signal ecg only");
-        if (!needs_region && !t.region.empty())
+        if (t.signal == TraceSignal::kVolume && !t.region.empty())
           fail(origin_of(node, "region"), join(path, "region"),
                "signal volume is the whole organ's; region applies to activation and ecg");
       });
@@ -177,6 +187,43 @@ ValueSpec<Overlay> overlay_spec() {
             "Live plots of a signal over time with a moving cursor."),
   });
 }
+
+namespace {
+
+/// A trace's region and lead against its organ: a computed ECG needs electrophysiology and
+/// no region; everything else a driven region.
+void check_trace(const TraceOverlay& t, const Node& item, const Organ& organ, const std::string& path) {
+  const auto find_region = [&](const std::string& name) -> const Region* {
+    for (const Region& r : organ.regions)
+      if (r.name == name) return &r;
+    return nullptr;
+  };
+  if (t.signal == TraceSignal::kVolume) return;
+  if (t.signal == TraceSignal::kEcg && organ.electrophysiology.enabled) {
+    if (!t.region.empty() || !t.atria.empty())
+      fail(origin_of(item, t.region.empty() ? "atria" : "region"), path + (t.region.empty() ? ".atria" : ".region"),
+           "organ '" + organ.name + "' has electrophysiology: its conduction system makes the ECG; give a `lead`");
+    return;
+  }
+  if (t.region.empty())
+    fail(item.origin, path,
+         "signal activation and ecg need a region: the driven region whose beats are shown (or, for ecg, an organ "
+         "with electrophysiology)");
+  if (item.find("lead"))
+    fail(origin_of(item, "lead"), path + ".lead",
+         "organ '" + organ.name + "' has no electrophysiology: its ECG is synthetic, with no leads");
+  const Region* r = find_region(t.region);
+  if (!r) fail(origin_of(item, "region"), path + ".region", "organ '" + organ.name + "' has no region named '" + t.region + "'");
+  if (r->drive.waveform == Waveform::kNone)
+    fail(origin_of(item, "region"), path + ".region", "region '" + t.region + "' has no drive: nothing beats to trace");
+  if (t.atria.empty()) return;
+  const Region* a = find_region(t.atria);
+  if (!a) fail(origin_of(item, "atria"), path + ".atria", "organ '" + organ.name + "' has no region named '" + t.atria + "'");
+  if (a->drive.waveform == Waveform::kNone)
+    fail(origin_of(item, "atria"), path + ".atria", "region '" + t.atria + "' has no drive: it gives no P waves");
+}
+
+}  // namespace
 
 /// Cross-checks of the overlay against the organs: every name it uses exists, and traced
 /// regions are driven.
@@ -219,25 +266,9 @@ void check_overlay(const Node& root, const Scene& s) {
   }
   if (ov.legend.enabled) find_organ(ov.legend.organ, origin_of(*node->find("legend"), "organ"), "overlay.legend.organ");
   for (std::size_t i = 0; i < ov.traces.size(); ++i) {
-    const TraceOverlay& t = ov.traces[i];
     const std::string path = "overlay.traces[" + std::to_string(i) + "]";
     const Node& item = node->find("traces")->items[i];
-    const Organ* organ = find_organ(t.organ, origin_of(item, "organ"), path + ".organ");
-    if (t.signal == TraceSignal::kVolume) continue;
-    const Region* r = find_region(*organ, t.region);
-    if (!r)
-      fail(origin_of(item, "region"), path + ".region",
-           "organ '" + organ->name + "' has no region named '" + t.region + "'");
-    if (r->drive.waveform == Waveform::kNone)
-      fail(origin_of(item, "region"), path + ".region",
-           "region '" + t.region + "' has no drive: nothing beats to trace");
-    if (t.atria.empty()) continue;
-    const Region* a = find_region(*organ, t.atria);
-    if (!a)
-      fail(origin_of(item, "atria"), path + ".atria",
-           "organ '" + organ->name + "' has no region named '" + t.atria + "'");
-    if (a->drive.waveform == Waveform::kNone)
-      fail(origin_of(item, "atria"), path + ".atria", "region '" + t.atria + "' has no drive: it gives no P waves");
+    check_trace(ov.traces[i], item, *find_organ(ov.traces[i].organ, origin_of(item, "organ"), path + ".organ"), path);
   }
 }
 

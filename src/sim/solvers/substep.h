@@ -13,10 +13,15 @@
 
 namespace systole::sim {
 
-/// The regions' contraction a * phi(t) at t_s into state.region_contraction: where the
-/// solver evaluates its springs' rest lengths.
+/// The regions' contraction a * phi(t) at t_s into state.region_contraction, then the
+/// excited drives' (electrophysiology): where the solver evaluates its springs' rest lengths.
 inline void update_contractions(const Model& model, State& s, double t_s) {
   region_contractions(model.regions, model.beat_boundaries, t_s, model.ramp_s, s.region_contraction);
+  const Eigen::Index first = static_cast<Eigen::Index>(model.regions.size());
+  for (int k = 0; k < model.excited.size(); ++k) {
+    const Drive& d = model.regions[static_cast<std::size_t>(model.excited.region[k])].drive;
+    s.region_contraction[first + k] = d.amplitude * activation(d, t_s - model.excited.delay_s[k], model.ramp_s);
+  }
 }
 
 /// x_prev = x; x += h v; then the kinematic regions' particles placed at t_end_s.
