@@ -1,4 +1,5 @@
 #include "clip/render_clip.h"
+
 #include "clip/video_format.h"
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 
 #include "clip/camera_framing.h"
 #include "clip/camera_motion.h"
+#include "clip/ecg_outputs.h"
 #include "clip/frame_list.h"
 #include "clip/frame_pipeline.h"
 #include "clip/overlay_plan.h"
@@ -419,6 +421,7 @@ StageTimes render_clip(const scene::Scene& given, const RenderRequest& request) 
   clip.finish();
   if (!request.wav.empty()) audio::write_wav(request.wav, *sound);
   if (!request.video.empty() && !scene.captions.empty()) encode::write_webvtt(webvtt_path(request.video), text.captions);
+  if (!request.video.empty()) write_ecg_outputs(source.world(), request.video, out.duration_s);
   progress.finish();
   times.steps = source.steps_taken();
   times.wall_s = seconds_since(start);

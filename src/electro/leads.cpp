@@ -8,6 +8,8 @@ namespace systole::electro {
 namespace {
 
 constexpr double kAmplitudeMv = 100;  ///< Rest -85 mV to the plateau's +15 mV.
+/// No beat's excitation and action potential last longer than this after it starts. unit: s
+constexpr double kLongestBeatS = 2.0;
 constexpr double kUpstrokeS = 0.0015;  ///< Logistic scale: 10-90 % in 6.6 ms.
 constexpr double kRepolarisationS = 0.014;  ///< Logistic scale: 10-90 % in 62 ms.
 /// sigma_i / (4 pi sigma_e): intracellular conductivity 0.17 S/m along the fibres (Clerc
@@ -92,8 +94,13 @@ Electrodes standard_electrodes() {
 }
 
 double action_potential_mv(double since_s, double duration_s) {
-  if (since_s < -12 * kUpstrokeS || since_s > duration_s + 12 * kRepolarisationS) return 0.0;
-  return kAmplitudeMv * logistic(since_s / kUpstrokeS) * (1.0 - logistic((since_s - duration_s) / kRepolarisationS));
+  // Each logistic step is taken as settled 10 scales from its middle (within 5e-5): outside
+  // both windows the node rests or is on its plateau, and no exponential is needed.
+  const double rise = 10 * kUpstrokeS, fall = 10 * kRepolarisationS;
+  if (since_s < -rise || since_s > duration_s + fall) return 0.0;
+  const double up = since_s < rise ? logistic(since_s / kUpstrokeS) : 1.0;
+  const double down = since_s > duration_s - fall ? logistic((since_s - duration_s) / kRepolarisationS) : 0.0;
+  return kAmplitudeMv * up * (1.0 - down);
 }
 
 Ecg compute_ecg(const mesh::OrganMesh& mesh, const Excitation& ex, const std::vector<double>& beat_start_s,
@@ -107,18 +114,26 @@ Ecg compute_ecg(const mesh::OrganMesh& mesh, const Excitation& ex, const std::ve
   const std::size_t samples = static_cast<std::size_t>(std::max(0.0, std::ceil((to_s - from_s) * rate_hz - 1e-9)));
   ecg.mv.assign(12, std::vector<double>(samples, 0.0));
   const std::size_t beats = beat_start_s.size();
+  // Each beat's restitution, once: a node's action potential lasts its 1-s duration times it.
+  std::vector<double> restitution(beats);
+  for (std::size_t k = 0; k < beats; ++k) {
+    const double cycle = k + 1 < beats ? beat_start_s[k + 1] - beat_start_s[k]
+                                       : (k > 0 ? beat_start_s[k] - beat_start_s[k - 1] : 1.0);
+    restitution[k] = action_potential_s(1.0, cycle);
+  }
   for (std::size_t s = 0; s < samples; ++s) {
     const double t = from_s + double(s) / rate_hz;
     std::array<double, 9> phi{};
+    // Only beats that started within an action potential's reach of t can be under way.
+    const std::size_t first = static_cast<std::size_t>(
+        std::lower_bound(beat_start_s.begin(), beat_start_s.end(), t - kLongestBeatS) - beat_start_s.begin());
     for (std::size_t i = 0; i < m.nodes.size(); ++i) {
       if (std::isnan(ex.activation_s[i])) continue;
       double vm = 0;
-      for (std::size_t k = 0; k < beats; ++k) {
+      for (std::size_t k = first; k < beats; ++k) {
         const double since = t - beat_start_s[k] - ex.activation_s[i];
         if (since < -0.1) break;
-        const double cycle = k + 1 < beats ? beat_start_s[k + 1] - beat_start_s[k]
-                                           : (k > 0 ? beat_start_s[k] - beat_start_s[k - 1] : 1.0);
-        vm += action_potential_mv(since, action_potential_s(ex.duration_1s_s[i], cycle));
+        vm += action_potential_mv(since, ex.duration_1s_s[i] * restitution[k]);
       }
       if (vm != 0)
         for (std::size_t e = 0; e < 9; ++e) phi[e] += g[i][e] * vm;
