@@ -112,8 +112,9 @@ void fill_computed_ecg_trace(const world::OrganBody& body, const scene::TraceOve
                              overlay::Trace& trace) {
   const std::optional<electro::Ecg> ecg = world::organ_ecg(body, clip_s + 1.0 / kSignalRateHz, kSignalRateHz);
   const std::vector<double>& lead = *ecg->lead(t.lead);
-  trace.title = "ECG lead " + t.lead;
-  trace.unit = "mV";
+  // No running readout: a monitor's ECG shows the wave, and its value near the baseline
+  // would flicker through meaningless digits.
+  trace.title = "ECG lead " + t.lead + " (mV)";
   trace.color = {120, 230, 150};
   for (std::size_t i = 0; i < trace.values.size(); ++i) trace.values[i] = i < lead.size() ? lead[i] : kNaN;
   const auto [lo, hi] = std::minmax_element(lead.begin(), lead.end());
