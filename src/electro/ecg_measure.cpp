@@ -117,7 +117,8 @@ BeatMeasures measure_beat(const Ecg& ecg, double from_s, double to_s, double cyc
   // The P wave: the combined amplitude's peak before the QRS, back to where it starts.
   const std::size_t p_end = on > from + quiet ? on - quiet : from + 1;
   std::size_t p = argmax(g.amplitude, from, p_end);
-  while (p > from && g.amplitude[p - 1] >= kEdgeShare * g.amplitude[argmax(g.amplitude, from, p_end)]) --p;
+  const double p_edge = kEdgeShare * g.amplitude[p];
+  while (p > from && g.amplitude[p - 1] >= p_edge) --p;
   m.p_onset_s = time(p);
   // The T wave: the combined amplitude's peak after the QRS, on to where it ends.
   const std::size_t t_from = std::min(off + static_cast<std::size_t>(0.06 * ecg.rate_hz), to - 1);
