@@ -190,14 +190,15 @@ ValueSpec<Overlay> overlay_spec() {
 
 namespace {
 
+const Region* find_region(const Organ& o, const std::string& name) {
+  for (const Region& r : o.regions)
+    if (r.name == name) return &r;
+  return nullptr;
+}
+
 /// A trace's region and lead against its organ: a computed ECG needs electrophysiology and
 /// no region; everything else a driven region.
 void check_trace(const TraceOverlay& t, const Node& item, const Organ& organ, const std::string& path) {
-  const auto find_region = [&](const std::string& name) -> const Region* {
-    for (const Region& r : organ.regions)
-      if (r.name == name) return &r;
-    return nullptr;
-  };
   if (t.signal == TraceSignal::kVolume) return;
   if (t.signal == TraceSignal::kEcg && organ.electrophysiology.enabled) {
     if (!t.region.empty() || !t.atria.empty())
@@ -212,12 +213,12 @@ void check_trace(const TraceOverlay& t, const Node& item, const Organ& organ, co
   if (item.find("lead"))
     fail(origin_of(item, "lead"), path + ".lead",
          "organ '" + organ.name + "' has no electrophysiology: its ECG is synthetic, with no leads");
-  const Region* r = find_region(t.region);
+  const Region* r = find_region(organ, t.region);
   if (!r) fail(origin_of(item, "region"), path + ".region", "organ '" + organ.name + "' has no region named '" + t.region + "'");
   if (r->drive.waveform == Waveform::kNone)
     fail(origin_of(item, "region"), path + ".region", "region '" + t.region + "' has no drive: nothing beats to trace");
   if (t.atria.empty()) return;
-  const Region* a = find_region(t.atria);
+  const Region* a = find_region(organ, t.atria);
   if (!a) fail(origin_of(item, "atria"), path + ".atria", "organ '" + organ.name + "' has no region named '" + t.atria + "'");
   if (a->drive.waveform == Waveform::kNone)
     fail(origin_of(item, "atria"), path + ".atria", "region '" + t.atria + "' has no drive: it gives no P waves");
@@ -235,11 +236,6 @@ void check_overlay(const Node& root, const Scene& s) {
     for (const Organ& o : s.organs)
       if (o.name == name) return &o;
     fail(origin, path, "no organ is named '" + name + "'");
-    return nullptr;
-  };
-  auto find_region = [](const Organ& o, const std::string& name) -> const Region* {
-    for (const Region& r : o.regions)
-      if (r.name == name) return &r;
     return nullptr;
   };
   const Overlay& ov = s.overlay;
