@@ -52,19 +52,38 @@ std::size_t quiet_edge(const std::vector<double>& slope, std::size_t peak, int d
   return static_cast<std::size_t>(static_cast<long>(i) - dir * static_cast<long>(quiet - 1));
 }
 
+/// How long the wave holding sample `at` stays off the baseline (beyond `edge`, on its
+/// side), within samples [on, off]. unit: samples
+std::size_t wave_width(const std::vector<double>& x, std::size_t at, std::size_t on, std::size_t off, double edge) {
+  const double sign = x[at] >= 0 ? 1 : -1;
+  std::size_t a = at, b = at;
+  while (a > on && sign * x[a - 1] > edge) --a;
+  while (b < off && sign * x[b + 1] > edge) ++b;
+  return b - a + 1;
+}
+
 /// A lead's QRS deflections over samples [on, off].
 LeadWaves qrs_waves(const std::vector<double>& x, std::size_t on, std::size_t off, double dt) {
   LeadWaves w;
   double biggest = 0;
+  std::size_t r_at = on, s_at = on;
   for (std::size_t i = on; i <= off; ++i) {
-    w.r = std::max(w.r, x[i]);
-    w.s = std::max(w.s, -x[i]);
+    if (x[i] > w.r) w.r = x[i], r_at = i;
+    if (-x[i] > w.s) w.s = -x[i], s_at = i;
     w.qrs_area += x[i] * dt;
     biggest = std::max(biggest, std::abs(x[i]));
   }
+  const double edge = kEdgeShare * biggest;
+  if (w.r > edge) w.r_duration_s = double(wave_width(x, r_at, on, off, edge)) * dt;
+  // The S is the negative wave after the R (before it, a q); a QS complex is all S.
+  if (w.r > edge) {
+    s_at = r_at;
+    for (std::size_t i = r_at; i <= off; ++i) s_at = x[i] < x[s_at] ? i : s_at;
+  }
+  if (-x[s_at] > edge) w.s_duration_s = double(wave_width(x, s_at, on, off, edge)) * dt;
   // The first deflection: a q when it goes down and an R follows.
   std::size_t i = on;
-  while (i <= off && std::abs(x[i]) < kEdgeShare * biggest) ++i;
+  while (i <= off && std::abs(x[i]) < edge) ++i;
   if (i <= off && x[i] < 0) {
     double depth = 0;
     for (; i <= off && x[i] < 0; ++i) depth = std::max(depth, -x[i]);
@@ -72,20 +91,21 @@ LeadWaves qrs_waves(const std::vector<double>& x, std::size_t on, std::size_t of
   }
   // Positive peaks above a fifth of the R, two counted apart only when the dip between
   // them falls below 85 % of the lower (a notch or an R').
-  std::vector<double> peaks;
+  std::vector<std::pair<double, std::size_t>> peaks;
   double dip = 0;
   for (std::size_t k = on + 1; k < off; ++k) {
     if (!peaks.empty()) dip = std::min(dip, x[k]);
     if (x[k] < 0.2 * w.r || x[k] < x[k - 1] || x[k] < x[k + 1]) continue;
-    if (peaks.empty() || dip < 0.85 * std::min(peaks.back(), x[k])) {
-      peaks.push_back(x[k]);
-    } else {
-      peaks.back() = std::max(peaks.back(), x[k]);
+    if (peaks.empty() || dip < 0.85 * std::min(peaks.back().first, x[k])) {
+      peaks.emplace_back(x[k], k);
+    } else if (x[k] > peaks.back().first) {
+      peaks.back() = {x[k], k};
     }
     dip = x[k];
   }
   w.r_peaks = static_cast<int>(peaks.size());
-  if (peaks.size() >= 2) w.r_prime = peaks[1];
+  if (peaks.size() >= 2) w.r_prime = peaks[1].first;
+  if (!peaks.empty()) w.r_peak_time_s = double(peaks.back().second - on) * dt;
   return w;
 }
 

@@ -22,6 +22,12 @@ struct LeadWaves {
   double qrs_area = 0;  ///< Net area of the QRS. unit: mV s
   double t = 0;         ///< The T wave's largest deflection, with its sign.
   int r_peaks = 0;      ///< Local maxima of the QRS above a fifth of its R: 2 for a notched or an rsR' complex.
+  /// How long the positive wave holding the R lasts, and the deepest negative wave after it
+  /// (the terminal S; in a QS complex the whole), each from where it leaves the baseline (5 %
+  /// of the QRS's largest deflection) to where it returns, within the QRS. unit: s
+  double r_duration_s = 0, s_duration_s = 0;
+  /// QRS onset to the last R peak: the R peak time (the intrinsicoid deflection). unit: s
+  double r_peak_time_s = 0;
 };
 
 struct BeatMeasures {

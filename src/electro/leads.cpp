@@ -84,8 +84,11 @@ Electrodes standard_electrodes() {
   e.right_arm = {mid - 0.15, 0.13, 0.05};  // Infraclavicular fossae (Mason & Likar 1966).
   e.left_arm = {mid + 0.15, 0.13, 0.05};
   e.left_leg = {mid + 0.12, -0.25, 0.06};  // Left anterior axillary line, below the costal margin.
-  e.chest = {Eigen::Vector3d(mid - 0.025, 0.02, 0.06),    // V1: 4th space, right sternal border.
-             Eigen::Vector3d(mid + 0.025, 0.02, 0.065),   // V2: 4th space, left sternal border.
+  // V1 and V2 lie on the sternum's borders, in front of the right ventricle with the
+  // sternum and the chest wall between: 2.5 cm further forward than the chest's curve
+  // through V3-V6 would put them, so the right ventricle's nearest wall does not swamp them.
+  e.chest = {Eigen::Vector3d(mid - 0.025, 0.02, 0.085),   // V1: 4th space, right sternal border.
+             Eigen::Vector3d(mid + 0.025, 0.02, 0.09),    // V2: 4th space, left sternal border.
              Eigen::Vector3d(mid + 0.0575, 0.0025, 0.062),  // V3: midway V2-V4.
              Eigen::Vector3d(mid + 0.09, -0.015, 0.055),  // V4: 5th space, midclavicular line.
              Eigen::Vector3d(mid + 0.13, -0.015, 0.025),  // V5: anterior axillary line, V4's level.

@@ -198,17 +198,20 @@ double surface_area(const Eigen::Matrix3Xd& x, const std::vector<Eigen::Vector3i
 
 }  // namespace
 
+Eigen::Vector3d embed_vertex(const Embedding& e, const Eigen::Matrix3Xd& x, int v) {
+  if (e.empty()) return x.col(v);
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 8; ++k) p += e.weight(k, v) * x.col(e.node(k, v));
+  return e.offset.cols() ? Eigen::Vector3d(p + e.offset.col(v)) : p;
+}
+
 void embed(const Embedding& e, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) {
   if (e.empty()) {
     out = x;
     return;
   }
   out.resize(3, e.vertex_count());
-  for (int v = 0; v < e.vertex_count(); ++v) {
-    Eigen::Vector3d p = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 8; ++k) p += e.weight(k, v) * x.col(e.node(k, v));
-    out.col(v) = e.offset.cols() ? Eigen::Vector3d(p + e.offset.col(v)) : p;
-  }
+  for (int v = 0; v < e.vertex_count(); ++v) out.col(v) = embed_vertex(e, x, v);
 }
 
 namespace {

@@ -49,4 +49,7 @@ ReducedBody build_reduced_model(const OrganParams& organ, const mesh::OrganGeome
 /// The render-mesh positions of particles x: out = x when the embedding is empty. unit: m
 void embed(const Embedding& embedding, const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out);
 
+/// One render vertex's position, as embed() places it. unit: m
+Eigen::Vector3d embed_vertex(const Embedding& embedding, const Eigen::Matrix3Xd& x, int vertex);
+
 }  // namespace systole::sim

@@ -2,11 +2,13 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
 #include "common/error.h"
+#include "sim/reduced.h"
 #include "world/frame_source.h"
 #include "world/heart_ecg.h"
 #include "world/world.h"
@@ -122,7 +124,25 @@ struct HeartRecording {
   std::vector<std::vector<double>> volumes, openings;  ///< Per frame, per cavity (ml) / valve.
   std::vector<double> step_times;  ///< With blood. unit: s
   std::vector<std::vector<bool>> step_open;
+  /// Every step's mid-ventricular wall thickness per segment (AHA 7-12). unit: s, m
+  std::vector<double> wall_times;
+  std::vector<std::array<double, 6>> mid_thickness;
 };
+
+/// The mean lining-to-epicardium distance of each mid-ventricular segment's pairs. unit: m
+std::array<double, 6> mid_thickness(const mesh::VentricleLandmarks& lv, const sim::Embedding& embedding,
+                                    const Eigen::Matrix3Xd& x) {
+  std::array<double, 6> sum{}, count{};
+  for (std::size_t i = 0; i < lv.wall.size(); ++i) {
+    const int s = lv.wall_segment[i] - 7;
+    if (s < 0 || s >= 6) continue;
+    const auto [inner, outer] = lv.wall[i];
+    sum[static_cast<std::size_t>(s)] += (sim::embed_vertex(embedding, x, outer) - sim::embed_vertex(embedding, x, inner)).norm();
+    count[static_cast<std::size_t>(s)] += 1;
+  }
+  for (std::size_t s = 0; s < 6; ++s) sum[s] = count[s] > 0 ? sum[s] / count[s] : 0.0;
+  return sum;
+}
 
 /// Listens to the source as it runs through frame `last`, recording organ `organ` from frame
 /// `first` on (never frame 0: the run is measured after its first step).
@@ -140,6 +160,11 @@ HeartRecording record_heart(world::FrameSource& source, int organ, int first, in
       rec.step_open.push_back(std::move(open));
     });
   }
+  source.on_step([&rec, organ](int o, const world::OrganBody& b) {
+    if (o != organ) return;
+    rec.wall_times.push_back(b.state.time_s);
+    rec.mid_thickness.push_back(mid_thickness(b.geometry.mesh.anatomy.left_ventricle, b.embedding, b.state.x));
+  });
   source.on_frame([&rec, &body, first](int f) {
     if (f < 1 || f < first) return;
     rec.times.push_back(body.state.time_s);
@@ -248,10 +273,34 @@ std::pair<int, int> measure_volumes(const mesh::Anatomy& anatomy, const HeartRec
   return {ed, es};
 }
 
+/// Each mid-ventricular segment's time to peak thickening over the measured beat, at every
+/// step, and the septum's (AHA 8, 9) lead over the lateral wall (11, 12).
+void segment_peaks(const HeartRecording& rec, PhysiologyReport& report) {
+  const double start = report.measured_from_s;
+  for (SegmentThickening& seg : report.segments) {
+    const std::size_t s = static_cast<std::size_t>(seg.segment - 7);
+    double thickest = -HUGE_VAL;
+    for (std::size_t i = 0; i < rec.wall_times.size(); ++i) {
+      const double t = rec.wall_times[i];
+      if (t < start - 1e-9 || t >= start + report.beat_s - 1e-9 || rec.mid_thickness[i][s] <= thickest) continue;
+      thickest = rec.mid_thickness[i][s];
+      seg.peak_ms = 1000 * (t - start);
+    }
+  }
+  const auto peak = [&](int segment) {
+    for (const SegmentThickening& seg : report.segments) {
+      if (seg.segment == segment) return seg.peak_ms;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+  };
+  report.septal_lateral_delay_ms = (peak(11) + peak(12)) / 2 - (peak(8) + peak(9)) / 2;
+}
+
 /// The left ventricle's shape from end-diastole `ed` to end-systole `es`: long-axis
 /// shortening, wall and segment thickening; and over the beat, twist and muscle volume.
-void measure_shape(const mesh::Anatomy& anatomy, const std::vector<Eigen::Matrix3Xd>& shapes, const std::vector<int>& beat,
-                   int ed, int es, PhysiologyReport& report) {
+void measure_shape(const mesh::Anatomy& anatomy, const HeartRecording& rec, const std::vector<int>& beat, int ed, int es,
+                   PhysiologyReport& report) {
+  const std::vector<Eigen::Matrix3Xd>& shapes = rec.shapes;
   const mesh::VentricleLandmarks& lv = anatomy.left_ventricle;
   auto long_axis = [&](const Eigen::Matrix3Xd& s) { return (s.col(lv.apex) - centroid(lv.annulus, s)).norm(); };
   auto thickness = [&](const Eigen::Matrix3Xd& s) {
@@ -262,6 +311,7 @@ void measure_shape(const mesh::Anatomy& anatomy, const std::vector<Eigen::Matrix
   report.long_axis_shortening_pct = 100 * (1 - long_axis(shapes[es]) / long_axis(shapes[ed]));
   report.wall_thickening_pct = 100 * (thickness(shapes[es]) / thickness(shapes[ed]) - 1);
   report.segments = segment_thickening(lv, shapes[ed], shapes[es]);
+  segment_peaks(rec, report);
   // Twist: apical minus basal rotation at its peak over the beat, from the ventricles'
   // activation, as speckle tracking times it from the ECG's R wave (Notomi et al. 2005); the
   // largest volume's frame can fall a frame or two either side of it.
@@ -343,7 +393,7 @@ PhysiologyReport measure_physiology(const scene::Scene& scene, int settle_beats)
   }
   const double aortic_closes = measure_valves(anatomy, body, rec, report);
   const auto [ed, es] = measure_volumes(anatomy, rec, beat, aortic_closes, report);
-  measure_shape(anatomy, rec.shapes, beat, ed, es, report);
+  measure_shape(anatomy, rec, beat, ed, es, report);
   if (body.model.excitation) measure_ecg(body, settle_beats, report);
   return report;
 }
@@ -408,7 +458,14 @@ std::string physiology_text(const PhysiologyReport& r) {
     std::snprintf(line, sizeof line, " %s %.0f %%%s", seg.name, seg.thickening_pct, seg.akinetic() ? " (akinetic)" : "");
     out += line;
   }
-  out += "\n";
+  out += "\n    time to peak thickening (ms after activation):";
+  for (const auto& seg : r.segments) {
+    std::snprintf(line, sizeof line, " %s %.0f", seg.name, seg.peak_ms);
+    out += line;
+  }
+  std::snprintf(line, sizeof line, "\n    septal (AHA 8, 9) to lateral (11, 12) delay %.0f ms%s\n", r.septal_lateral_delay_ms,
+                std::abs(r.septal_lateral_delay_ms) >= kDyssynchronyDelayMs ? " (dyssynchronous: 60 ms or more, Bax 2003)" : "");
+  out += line;
   figure("twist", r.twist_deg, "deg", kTwist);
   std::snprintf(line, sizeof line, "    (apex %+.1f deg, base %+.1f deg, anticlockwise seen from the apex; end-systole %.0f ms after activation)\n",
                 r.apical_rotation_deg, r.basal_rotation_deg, r.end_systole_ms);

@@ -59,11 +59,19 @@ struct ChamberVolume {
 /// thickening; 10 % is our threshold for negligible).
 inline constexpr double kAkineticThickeningPct = 10;
 
+/// The septum's (AHA 8, 9) and the lateral wall's (11, 12) times to peak thickening this far
+/// apart or more: a dyssynchronous left ventricle, as left bundle branch block makes it. Bax
+/// et al. 2003 (Am J Cardiol 92:1238) took a 60-ms septal-to-lateral delay as dyssynchrony.
+inline constexpr double kDyssynchronyDelayMs = 60;
+
 /// Systolic thickening of one mid-ventricular segment (AHA 7-12, mesh/anatomy.h).
 struct SegmentThickening {
   int segment = 0;           ///< 7 anterior ... 12 anterolateral.
   const char* name = "";
   double thickening_pct = 0;
+  /// When the segment is thickest in the beat, after the ventricles' activation (to the
+  /// solver's step, or the frame without blood). unit: ms
+  double peak_ms = std::numeric_limits<double>::quiet_NaN();
   bool akinetic() const { return thickening_pct < kAkineticThickeningPct; }
 };
 
@@ -86,6 +94,8 @@ struct PhysiologyReport {
   double long_axis_shortening_pct = 0;
   double wall_thickening_pct = 0;
   std::vector<SegmentThickening> segments;  ///< Mid-ventricular, AHA order 7-12.
+  /// The lateral wall's time to peak thickening (segments 11, 12) less the septum's (8, 9).
+  double septal_lateral_delay_ms = std::numeric_limits<double>::quiet_NaN();
   double apical_rotation_deg = 0, basal_rotation_deg = 0, twist_deg = 0;  ///< At peak twist; anticlockwise seen from the apex positive.
   double muscle_volume_change_pct = 0;  ///< Largest change of the myocardium's volume over the beat.
   std::vector<ValveEvent> valve_events;
