@@ -1,6 +1,7 @@
 #include "train/coupling.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 
 #include "sim/forces.h"
 #include "sim/solvers/step.h"
@@ -30,10 +31,37 @@ class SpringFits {
       const bool b = sp.region_b[j] >= 0 && column_of_[sp.region_b[j]] >= 0;
       if ((a || b) && sp.rest_m[j] > 0) rows_.push_back(j);
     }
+    // Each region's contraction slots: its own, or with a conduction system the slots of its
+    // spring ends (sim::Model::excited), each the region's drive from its own excitation.
+    slots_of_.resize(model.regions.size());
+    const auto count = [&](int region, int slot) {
+      if (region < 0) return;
+      auto& slots = slots_of_[static_cast<std::size_t>(region)];
+      const auto it = std::find_if(slots.begin(), slots.end(), [&](const auto& e) { return e.first == slot; });
+      if (it == slots.end()) slots.emplace_back(slot, 1.0); else it->second += 1.0;
+    };
+    for (int j = 0; j < sp.size(); ++j) {
+      count(sp.region_a[j], sp.contraction_a.empty() ? sp.region_a[j] : sp.contraction_a[j]);
+      count(sp.region_b[j], sp.contraction_b.empty() ? sp.region_b[j] : sp.contraction_b[j]);
+    }
+    for (auto& slots : slots_of_) {
+      double ends = 0;
+      for (const auto& e : slots) ends += e.second;
+      for (auto& e : slots) e.second /= ends;
+    }
     const auto columns = static_cast<Eigen::Index>(fitted.size());
     force_jacobian_.resize(3 * model.particle_count(), columns);
     length_jacobian_.resize(static_cast<Eigen::Index>(rows_.size()), columns);
     residual_.resize(static_cast<Eigen::Index>(rows_.size()));
+  }
+
+  /// Region r's contraction now: the mean over its spring ends' slots (its own without a
+  /// conduction system).
+  double now(const sim::State& state, std::size_t r) const {
+    if (slots_of_[r].empty()) return state.region_contraction[static_cast<Eigen::Index>(r)];
+    double c = 0;
+    for (const auto& [slot, share] : slots_of_[r]) c += share * state.region_contraction[slot];
+    return c;
   }
 
   /// Whether region r is fitted (has a column).
@@ -69,11 +97,18 @@ class SpringFits {
 
   /// The contractions whose driven rest lengths best match the springs' lengths now
   /// (coupling.h): two Gauss-Newton steps from the current contractions, derivatives by
-  /// central differences of sim::driven_rest_length (fibres make it nonlinear in c).
+  /// central differences of sim::driven_rest_length (fibres make it nonlinear in c). A
+  /// region's change shifts all its slots alike; per region, its contraction now plus it.
   Eigen::VectorXd from_lengths(const sim::State& state) {
     const sim::Springs& sp = model_.springs;
     Eigen::VectorXd contraction = state.region_contraction;
+    Eigen::VectorXd shift = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model_.regions.size()));
     constexpr double kDelta = 1e-4;
+    const auto shifted = [&](const Eigen::VectorXd& c, int region, double by) {
+      Eigen::VectorXd out = c;
+      for (const auto& e : slots_of_[static_cast<std::size_t>(region)]) out[e.first] += by;
+      return out;
+    };
     for (int iteration = 0; iteration < 2; ++iteration) {
       length_jacobian_.setZero();
       for (std::size_t i = 0; i < rows_.size(); ++i) {
@@ -83,22 +118,27 @@ class SpringFits {
         residual_[row] = (length - sim::driven_rest_length(sp, j, contraction)) / sp.rest_m[j];
         for (int end : {sp.region_a[j], sp.region_b[j]}) {
           if (end < 0 || column_of_[end] < 0 || length_jacobian_(row, column_of_[end]) != 0) continue;
-          Eigen::VectorXd up = contraction, down = contraction;
-          up[end] += kDelta, down[end] -= kDelta;
-          length_jacobian_(row, column_of_[end]) =
-              (sim::driven_rest_length(sp, j, up) - sim::driven_rest_length(sp, j, down)) / (2 * kDelta * sp.rest_m[j]);
+          length_jacobian_(row, column_of_[end]) = (sim::driven_rest_length(sp, j, shifted(contraction, end, kDelta)) -
+                                                    sim::driven_rest_length(sp, j, shifted(contraction, end, -kDelta))) /
+                                                   (2 * kDelta * sp.rest_m[j]);
         }
       }
       const Eigen::VectorXd step = ridge_solve(length_jacobian_, residual_, 1e-6);
-      for (std::size_t c = 0; c < fitted_.size(); ++c) contraction[fitted_[c]] += step[static_cast<Eigen::Index>(c)];
+      for (std::size_t c = 0; c < fitted_.size(); ++c) {
+        const double by = step[static_cast<Eigen::Index>(c)];
+        contraction = shifted(contraction, fitted_[c], by);
+        shift[fitted_[c]] += by;
+      }
     }
-    return contraction;
+    for (std::size_t r = 0; r < model_.regions.size(); ++r) shift[static_cast<Eigen::Index>(r)] += now(state, r);
+    return shift;
   }
 
  private:
   const sim::Model& model_;
   const std::vector<int>& fitted_;
   std::vector<int> column_of_;  ///< Per region, its column, -1 when not fitted.
+  std::vector<std::vector<std::pair<int, double>>> slots_of_;  ///< Per region: its slots, each with its share of the ends.
   std::vector<int> rows_;       ///< The springs a fitted region drives.
   Eigen::MatrixXd force_jacobian_, length_jacobian_;
   Eigen::VectorXd residual_;
@@ -148,8 +188,7 @@ RecordedSignals record_coupled(const Problem& problem, const sim::Model& base, d
     const Eigen::VectorXd dc = fits.from_forces(state, h);
     const Eigen::VectorXd by_length = fits.from_lengths(state);
     for (std::size_t r = 0; r < model.regions.size(); ++r) {
-      const double now = state.region_contraction[static_cast<Eigen::Index>(r)];
-      rec.contraction[r].push_back(now + (fits.fitted(r) ? dc[fits.column(r)] : 0.0));
+      rec.contraction[r].push_back(fits.now(state, r) + (fits.fitted(r) ? dc[fits.column(r)] : 0.0));
       rec.length_contraction[r].push_back(by_length[static_cast<Eigen::Index>(r)]);
     }
     rec.times_s.push_back(state.time_s);

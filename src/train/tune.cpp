@@ -65,6 +65,33 @@ std::vector<scene::Region> decode(std::vector<scene::Region> regions, const std:
   return regions;
 }
 
+/// A region's delay is kept as written when the target locks it, and always with a conduction
+/// system: there the excitation times each part's beat, and a region may not write a delay.
+bool delay_locked(const scene::Organ& organ, const std::string& region) {
+  return organ.electrophysiology.enabled || is_locked(organ.target, region, "delay");
+}
+
+/// Each region's mean excitation time over its driven spring ends (sim::Model::excited),
+/// from the sinus node's firing; 0 without a conduction system. The fits read a region's
+/// recorded signal from it: its springs run its drive from their own excitation. unit: s
+std::vector<double> region_activation_s(const sim::Model& model) {
+  const int regions = static_cast<int>(model.regions.size());
+  std::vector<double> sum(model.regions.size(), 0.0), count(model.regions.size(), 0.0);
+  const auto add = [&](int slot) {
+    if (slot < regions) return;
+    const std::size_t e = static_cast<std::size_t>(slot - regions);
+    const std::size_t r = static_cast<std::size_t>(model.excited.region[e]);
+    sum[r] += model.excited.delay_s[e];
+    count[r] += 1;
+  };
+  for (std::size_t j = 0; j < model.springs.contraction_a.size(); ++j) {
+    add(model.springs.contraction_a[j]);
+    add(model.springs.contraction_b[j]);
+  }
+  for (std::size_t r = 0; r < sum.size(); ++r) sum[r] = count[r] > 0 ? sum[r] / count[r] : 0.0;
+  return sum;
+}
+
 /// The free parameters of the start regions, with their boxes and first steps.
 std::vector<Parameter> free_parameters(const scene::Organ& organ, const std::vector<scene::Region>& start,
                                        const std::vector<bool>& trained) {
@@ -87,7 +114,7 @@ std::vector<Parameter> free_parameters(const scene::Organ& organ, const std::vec
         if (k > 0) add(h + ".phase", Parameter::Kind::kHarmonicPhase, static_cast<int>(k), -kPi, kPi, true, 0.3);
       }
     }
-    if (trained[r] && !is_locked(t, region.name, "delay"))
+    if (trained[r] && !delay_locked(organ, region.name))
       add("delay", Parameter::Kind::kDelay, 0, 0.0, period, true, 0.05 * period);
     if (!is_locked(t, region.name, "stiffness")) {
       const double s0 = region.stiffness_scale;
@@ -127,7 +154,7 @@ std::vector<int> trained_regions(const scene::Organ& organ, std::vector<bool>& d
   for (std::size_t r = 0; r < organ.regions.size(); ++r) {
     const scene::Region& region = organ.regions[r];
     const bool all_locked = is_locked(t, region.name, "amplitude") && is_locked(t, region.name, "shape") &&
-                            is_locked(t, region.name, "delay");
+                            delay_locked(organ, region.name);
     if (region.pinned || all_locked || region.drive.waveform == scene::Waveform::kNone) continue;
     drive_trained[r] = true;
     fitted_regions.push_back(static_cast<int>(r));
@@ -186,10 +213,11 @@ void fit_kept_waveform(scene::Drive& d, const std::vector<double>& times_s, cons
 }
 
 // The regions with each trained drive fitted as a Fourier series to the recorded signal,
-// locked parameters kept as written: CMA-ES's starting point.
+// locked parameters kept as written: CMA-ES's starting point. Each region's signal is read
+// from its springs' mean excitation (`activation_s`), as its drive runs from theirs.
 std::vector<scene::Region> fitted_regions(const scene::Organ& organ, const std::vector<double>& times_s,
                                           const std::vector<std::vector<double>>& signal,
-                                          const std::vector<bool>& drive_trained) {
+                                          const std::vector<bool>& drive_trained, const std::vector<double>& activation_s) {
   const scene::Target& t = organ.target;
   std::vector<scene::Region> start = organ.regions;
   for (std::size_t r = 0; r < start.size(); ++r) {
@@ -198,24 +226,29 @@ std::vector<scene::Region> fitted_regions(const scene::Organ& organ, const std::
       if (d.waveform != scene::Waveform::kNone && !start[r].pinned) d.rate_hz = t.rate_hz, d.rate_end_hz = 0;
       continue;
     }
+    std::vector<double> times = times_s;
+    for (double& time : times) time -= activation_s[r];
+    const bool keep_delay = delay_locked(organ, start[r].name);
     if (is_locked(t, start[r].name, "shape")) {
       d.rate_hz = t.rate_hz;
       d.rate_end_hz = 0;
-      fit_kept_waveform(d, times_s, signal[r], !is_locked(t, start[r].name, "amplitude"), !is_locked(t, start[r].name, "delay"));
+      fit_kept_waveform(d, times, signal[r], !is_locked(t, start[r].name, "amplitude"), !keep_delay);
       continue;
     }
-    const scene::Drive fit = drive_from_series(fit_fourier(times_s, signal[r], t.rate_hz, t.harmonics));
+    const scene::Drive fit = drive_from_series(fit_fourier(times, signal[r], t.rate_hz, t.harmonics));
     const scene::Drive written = d;
-    {
-      d = scene::Drive{};
-      d.waveform = scene::Waveform::kFourier;
-      d.harmonics = fit.harmonics;
-    }
+    d = scene::Drive{};
+    d.waveform = scene::Waveform::kFourier;
+    d.harmonics = fit.harmonics;
     d.rate_hz = t.rate_hz;
     d.rate_end_hz = 0;
     d.amplitude = is_locked(t, start[r].name, "amplitude") ? written.amplitude : fit.amplitude;
-    d.delay_s = is_locked(t, start[r].name, "delay") ? written.delay_s : fit.delay_s;
-    if (d.waveform == scene::Waveform::kFourier && d.harmonics.empty()) d.harmonics = fit.harmonics;
+    d.delay_s = keep_delay ? written.delay_s : fit.delay_s;
+    // A kept delay: the harmonics' phases carry the fit's timing instead (harmonic k's
+    // phase turns by 2 pi k f times the difference), so the series stays where it was fitted.
+    for (std::size_t k = 0; keep_delay && k < d.harmonics.size(); ++k)
+      d.harmonics[k].phase_rad =
+          std::remainder(d.harmonics[k].phase_rad - 2 * kPi * double(k + 1) * t.rate_hz * (fit.delay_s - d.delay_s), 2 * kPi);
   }
   return start;
 }
@@ -328,9 +361,11 @@ OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const
   out.transfer = problem.target.transfer_note();
   log("floor (the body tied to the target at " + std::to_string(static_cast<int>(t.coupling_N_per_m)) +
       " N/m): " + format_error(out.floor));
-  const std::vector<scene::Region> by_forces = fitted_regions(organ, recorded.times_s, recorded.contraction, out.drive_trained);
+  const std::vector<double> activation = region_activation_s(problem.model);
+  const std::vector<scene::Region> by_forces =
+      fitted_regions(organ, recorded.times_s, recorded.contraction, out.drive_trained, activation);
   const std::vector<scene::Region> by_lengths =
-      fitted_regions(organ, recorded.times_s, recorded.length_contraction, out.drive_trained);
+      fitted_regions(organ, recorded.times_s, recorded.length_contraction, out.drive_trained, activation);
   out.fitted_from_forces = play(problem, with_regions(problem.model, by_forces));
   out.fitted_from_lengths = play(problem, with_regions(problem.model, by_lengths));
   log("fitted from forces: " + format_error(out.fitted_from_forces) + "; mean coupling force " +
