@@ -138,6 +138,14 @@ OverlayPlan::OverlayPlan(const scene::Scene& scene, const world::World& world) :
   if (spec_.labels.enabled) plan_labels(scene, world);
   if (spec_.legend.enabled) plan_legend(scene, world);
   for (std::size_t i = 0; i < spec_.traces.size(); ++i) plan_trace(scene, world, spec_.traces[i], static_cast<int>(i));
+  if (spec_.ecg_sheet.enabled) plan_ecg_sheet(scene, world);
+}
+
+void OverlayPlan::plan_ecg_sheet(const scene::Scene& scene, const world::World& world) {
+  const world::OrganBody& body = world.organs[static_cast<std::size_t>(organ_index(scene, spec_.ecg_sheet.organ))];
+  const double clip_s = scene.output.frame_count() / fps_;
+  const std::optional<electro::Ecg> ecg = world::organ_ecg(body, clip_s + 1.0 / kSignalRateHz, kSignalRateHz);
+  ecg_sheet_ = {"Computed 12-lead ECG of " + body.model.name, ecg->rate_hz, ecg->start_s, ecg->leads, ecg->mv};
 }
 
 void OverlayPlan::plan_views(const scene::Scene& scene) {
@@ -357,6 +365,11 @@ void OverlayPlan::layout(int width, int height) {
     items.push_back({t.position, overlay::scaled_px(t.width_px, height), overlay::scaled_px(t.height_px, height),
                      &trace_boxes_[i]});
   }
+  if (spec_.ecg_sheet.enabled) {
+    // The paper's own proportions (overlay/ecg_sheet.h: 268 mm x 135 mm), never stretched.
+    const int w = overlay::scaled_px(spec_.ecg_sheet.width_px, height);
+    items.push_back({spec_.ecg_sheet.position, w, w * 135 / 268, &ecg_sheet_box_});
+  }
   const int top_start = spec_.title.empty() ? 0 : title_box_.bottom();
   for (const scene::Corner c : {scene::Corner::kTopLeft, scene::Corner::kTopRight, scene::Corner::kBottomLeft,
                                 scene::Corner::kBottomRight}) {
@@ -391,6 +404,7 @@ void OverlayPlan::draw(Image& image, const OverlayFrame& frame) {
     }
     std::vector<overlay::Rect> keep_out = trace_boxes_;
     if (legend_box_.width > 0) keep_out.push_back(legend_box_);
+    if (ecg_sheet_box_.width > 0) keep_out.push_back(ecg_sheet_box_);
     if (title_box_.width > 0) keep_out.push_back(title_box_);
     placed_ = overlay::place_labels(requests, overlay::Rect{0, 0, image.width, image.height}, keep_out, *font_);
     overlay::draw_labels(image, placed_, *font_, style);
@@ -414,6 +428,7 @@ void OverlayPlan::draw(Image& image, const OverlayFrame& frame) {
     font_->size(overlay::scaled_px(13, image.height));
     overlay::draw_trace(image, trace_boxes_[i], trace, frame.time_s, *font_, style);
   }
+  if (ecg_sheet_box_.width > 0) overlay::draw_ecg_sheet(image, ecg_sheet_box_, ecg_sheet_, *font_, frame.time_s, frame.time_s);
   if (!spec_.title.empty()) {
     overlay::draw_title(image, overlay::Rect{0, 0, image.width, image.height}, spec_.title, *font_,
                         overlay::scaled_px(spec_.title_size_px, image.height), style);

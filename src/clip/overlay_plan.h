@@ -11,6 +11,7 @@
 
 #include "common/image.h"
 #include "mesh/anatomy.h"
+#include "overlay/ecg_sheet.h"
 #include "overlay/labels.h"
 #include "overlay/legend.h"
 #include "overlay/trace.h"
@@ -56,6 +57,8 @@ class OverlayPlan {
   const std::vector<overlay::Trace>& traces() const { return traces_; }
   /// Where the legend of the last draw went (empty rect: none). unit: px
   const overlay::Rect& legend_box() const { return legend_box_; }
+  /// Where the ECG sheet of the last draw went (empty rect: none). unit: px
+  const overlay::Rect& ecg_sheet_box() const { return ecg_sheet_box_; }
   const std::vector<overlay::LegendEntry>& legend_entries() const { return legend_; }
 
  private:
@@ -76,6 +79,7 @@ class OverlayPlan {
   void plan_labels(const scene::Scene& scene, const world::World& world);
   void plan_legend(const scene::Scene& scene, const world::World& world);
   void plan_trace(const scene::Scene& scene, const world::World& world, const scene::TraceOverlay& t, int index);
+  void plan_ecg_sheet(const scene::Scene& scene, const world::World& world);
   void layout(int width, int height);
 
   bool empty_ = true;
@@ -95,12 +99,13 @@ class OverlayPlan {
     std::vector<double> mL;                  ///< Per frame, NaN until recorded. unit: mL
   };
   std::vector<int> trace_series_;  ///< Per trace: the volume series it shows, or -1.
+  overlay::EcgSheet ecg_sheet_;     ///< The organ's 12 leads over the clip, when overlay.ecg_sheet is on.
   std::vector<int> volume_organs_;
   std::vector<VolumeSeries> series_;
 
   std::unique_ptr<plot::Font> font_;  ///< Loaded on the drawing thread's first frame.
   bool laid_out_ = false;
-  overlay::Rect legend_box_, title_box_;
+  overlay::Rect legend_box_, title_box_, ecg_sheet_box_;
   std::vector<overlay::Rect> trace_boxes_;
   std::vector<overlay::PlacedLabel> placed_;
 };

@@ -103,14 +103,25 @@ struct TraceOverlay {
   Origin origin;
 };
 
+/// The organ's computed 12-lead ECG as a sheet of ECG paper (overlay/ecg_sheet.h), written
+/// up to the frame's time as an ECG machine writes while it records.
+struct EcgSheetOverlay {
+  bool enabled = false;
+  std::string organ;                 ///< Empty: the first organ.
+  Corner position = Corner::kBottomRight;
+  int width_px = 520;                ///< The height follows the sheet's 268:135. unit: px at 720 lines
+  Origin origin;
+};
+
 struct Overlay {
   std::string title;                 ///< Across the top; empty: none.
   int title_size_px = 26;            ///< unit: px at 720 lines
   LabelsOverlay labels;
   LegendOverlay legend;
   std::vector<TraceOverlay> traces;  ///< Insets; several in one corner stack.
+  EcgSheetOverlay ecg_sheet;
 
-  bool empty() const { return title.empty() && !labels.enabled && !legend.enabled && traces.empty(); }
+  bool empty() const { return title.empty() && !labels.enabled && !legend.enabled && traces.empty() && !ecg_sheet.enabled; }
 };
 
 }  // namespace systole::scene

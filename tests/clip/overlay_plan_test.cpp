@@ -201,6 +201,47 @@ TEST(OverlayPlan, VolumeTraceFallsAsTheVentriclesContractAndTheCursorMoves) {
   EXPECT_LT(values[static_cast<std::size_t>(lowest)], 0.7 * values[0]) << "the ventricle ejects";
 }
 
+// The 12-lead sheet (overlay.ecg_sheet, scenes/heart-conduction.yaml): in its corner at the
+// paper's proportions, and written as an ECG machine writes: the second column (2.5-5 s),
+// right of its lead names, is blank paper at 1 s and carries its three leads at 4.5 s.
+TEST(OverlayPlan, TheEcgSheetIsWrittenUpToTheFramesTime) {
+  const scene::Scene s = scene::load(source("scenes/heart-conduction.yaml"));  // 1280x720: the sheet 440 px wide.
+  ASSERT_TRUE(s.overlay.ecg_sheet.enabled);
+  world::World world = world::build_world(s);
+  clip::OverlayPlan plan(s, world);
+  const auto p = positions_now(world);
+  const auto ink_in_second_column = [&](int frame) {
+    Image image(s.output.width, s.output.height);
+    plan.draw(image, capture(plan, frame, p));
+    const overlay::EcgSheetLayout layout = overlay::ecg_sheet_layout(plan.ecg_sheet_box());
+    int ink = 0;  // The trace is near black; the paper and its grid are light and pink.
+    for (int y = int(layout.row_top(0)); y < int(layout.row_top(3)); ++y) {
+      for (int x = int(layout.x_at(3.5)); x < int(layout.x_at(5.0)) - 2; ++x) {  // Right of the lead names.
+        const auto px = image.pixel(x, y);
+        ink += px[0] < 90 && px[1] < 90 && px[2] < 90;
+      }
+    }
+    return ink;
+  };
+  EXPECT_EQ(ink_in_second_column(30), 0) << "nothing after 1 s is written at 1 s";
+  EXPECT_GT(ink_in_second_column(135), 100) << "3.5-4.5 s of three leads at 4.5 s";
+  const overlay::Rect box = plan.ecg_sheet_box();
+  EXPECT_EQ(box.x, overlay::scaled_px(12, s.output.height)) << "bottom-left";
+  EXPECT_EQ(box.bottom(), s.output.height - overlay::scaled_px(12, s.output.height));
+  EXPECT_NEAR(double(box.width) / box.height, 268.0 / 135, 0.02);
+}
+
+// A sheet needs twelve leads: an organ without a conduction system is refused.
+TEST(OverlayPlan, AnEcgSheetNeedsElectrophysiology) {
+  try {
+    scene::load(source("scenes/heart-labels.yaml"), {"overlay.ecg_sheet.width=400"});
+    FAIL() << "loaded";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("overlay.ecg_sheet"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("electrophysiology"), std::string::npos) << e.what();
+  }
+}
+
 TEST(OverlayPlan, AChamberTheMeshLacksIsAnErrorNamingTheTraceAndTheChambers) {
   const std::vector<std::string> size = {"output.width=" + std::to_string(kWidth), "output.height=" + std::to_string(kHeight)};
   auto message = [](const scene::Scene& s) {

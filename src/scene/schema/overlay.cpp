@@ -1,4 +1,4 @@
-// The teaching tables: split-screen views and overlays (title, labels, legend, traces).
+// The teaching tables: split-screen views and overlays (title, labels, legend, traces, ECG sheet).
 
 #include "scene/schema/parts.h"
 
@@ -114,6 +114,18 @@ ValueSpec<Overlay> overlay_spec() {
         l.enabled = true;
         l.origin = node.origin;
       });
+  auto ecg_sheet = map<EcgSheetOverlay>(
+      {
+          field("organ", name_text(), &EcgSheetOverlay::organ, "The organ whose computed ECG is shown: it needs `electrophysiology`.")
+              .shown_default("the first organ"),
+          field("position", corner(), &EcgSheetOverlay::position, "Corner of the frame; insets in the same corner stack."),
+          field("width", whole<int>(268, 1920), &EcgSheetOverlay::width_px,
+                "Sheet width in pixels of a 720-line frame; its height follows the paper's 268:135."),
+      },
+      [](const Node& node, EcgSheetOverlay& e, const std::string&, const Context&) {
+        e.enabled = true;
+        e.origin = node.origin;
+      });
   // window is a time or the word "clip" (0 inside).
   const Range window_range = open_closed(0, 600);
   Field<TraceOverlay> window{
@@ -185,6 +197,10 @@ ValueSpec<Overlay> overlay_spec() {
       field("legend", legend, &Overlay::legend, "A key of the organ's region colours.").shown_default("none"),
       field("traces", list(trace, 0, 8, "list of traces"), &Overlay::traces,
             "Live plots of a signal over time with a moving cursor."),
+      field("ecg_sheet", ecg_sheet, &Overlay::ecg_sheet,
+            "The organ's computed 12-lead ECG on ECG paper (25 mm/s, 10 mm/mV; 3x4 leads and a lead II rhythm "
+            "strip), written up to the frame's time, page by page of 10 s.")
+          .shown_default("none"),
   });
 }
 
@@ -261,6 +277,13 @@ void check_overlay(const Node& root, const Scene& s) {
     }
   }
   if (ov.legend.enabled) find_organ(ov.legend.organ, origin_of(*node->find("legend"), "organ"), "overlay.legend.organ");
+  if (ov.ecg_sheet.enabled) {
+    const Node* sheet = node->find("ecg_sheet");
+    const Organ* o = find_organ(ov.ecg_sheet.organ, origin_of(*sheet, "organ"), "overlay.ecg_sheet.organ");
+    if (!o->electrophysiology.enabled)
+      fail(sheet->origin, "overlay.ecg_sheet",
+           "organ '" + o->name + "' has no electrophysiology: only a conduction system's ECG has twelve leads");
+  }
   for (std::size_t i = 0; i < ov.traces.size(); ++i) {
     const std::string path = "overlay.traces[" + std::to_string(i) + "]";
     const Node& item = node->find("traces")->items[i];
