@@ -425,6 +425,25 @@ std::string ecg_text(const PhysiologyReport& r) {
   return out;
 }
 
+/// The mid-ventricular segments: each one's thickening and time to peak thickening, and the
+/// septum's lead over the lateral wall.
+std::string segments_text(const PhysiologyReport& r) {
+  std::string out = "    mid-ventricular segments' thickening (AHA 7-12; below 10 % akinetic):";
+  char line[256];
+  for (const auto& seg : r.segments) {
+    std::snprintf(line, sizeof line, " %s %.0f %%%s", seg.name, seg.thickening_pct, seg.akinetic() ? " (akinetic)" : "");
+    out += line;
+  }
+  out += "\n    time to peak thickening (ms after activation):";
+  for (const auto& seg : r.segments) {
+    std::snprintf(line, sizeof line, " %s %.0f", seg.name, seg.peak_ms);
+    out += line;
+  }
+  std::snprintf(line, sizeof line, "\n    septal (AHA 8, 9) to lateral (11, 12) delay %.0f ms%s\n", r.septal_lateral_delay_ms,
+                std::abs(r.septal_lateral_delay_ms) >= kDyssynchronyDelayMs ? " (dyssynchronous: 60 ms or more, Bax 2003)" : "");
+  return out + line;
+}
+
 }  // namespace
 
 std::string physiology_text(const PhysiologyReport& r) {
@@ -453,19 +472,7 @@ std::string physiology_text(const PhysiologyReport& r) {
   figure("ejection fraction", r.ejection_fraction_pct, "%", kEjectionFraction);
   figure("long-axis shortening", r.long_axis_shortening_pct, "%", kLongAxisShortening);
   figure("wall thickening", r.wall_thickening_pct, "%", kWallThickening);
-  out += "    mid-ventricular segments' thickening (AHA 7-12; below 10 % akinetic):";
-  for (const auto& seg : r.segments) {
-    std::snprintf(line, sizeof line, " %s %.0f %%%s", seg.name, seg.thickening_pct, seg.akinetic() ? " (akinetic)" : "");
-    out += line;
-  }
-  out += "\n    time to peak thickening (ms after activation):";
-  for (const auto& seg : r.segments) {
-    std::snprintf(line, sizeof line, " %s %.0f", seg.name, seg.peak_ms);
-    out += line;
-  }
-  std::snprintf(line, sizeof line, "\n    septal (AHA 8, 9) to lateral (11, 12) delay %.0f ms%s\n", r.septal_lateral_delay_ms,
-                std::abs(r.septal_lateral_delay_ms) >= kDyssynchronyDelayMs ? " (dyssynchronous: 60 ms or more, Bax 2003)" : "");
-  out += line;
+  out += segments_text(r);
   figure("twist", r.twist_deg, "deg", kTwist);
   std::snprintf(line, sizeof line, "    (apex %+.1f deg, base %+.1f deg, anticlockwise seen from the apex; end-systole %.0f ms after activation)\n",
                 r.apical_rotation_deg, r.basal_rotation_deg, r.end_systole_ms);

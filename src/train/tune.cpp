@@ -214,11 +214,12 @@ void fit_kept_waveform(scene::Drive& d, const std::vector<double>& times_s, cons
 
 // The regions with each trained drive fitted as a Fourier series to the recorded signal,
 // locked parameters kept as written: CMA-ES's starting point. Each region's signal is read
-// from its springs' mean excitation (`activation_s`), as its drive runs from theirs.
-std::vector<scene::Region> fitted_regions(const scene::Organ& organ, const std::vector<double>& times_s,
+// from its springs' mean excitation (region_activation_s), as its drive runs from theirs.
+std::vector<scene::Region> fitted_regions(const scene::Organ& organ, const sim::Model& model, const std::vector<double>& times_s,
                                           const std::vector<std::vector<double>>& signal,
-                                          const std::vector<bool>& drive_trained, const std::vector<double>& activation_s) {
+                                          const std::vector<bool>& drive_trained) {
   const scene::Target& t = organ.target;
+  const std::vector<double> activation_s = region_activation_s(model);
   std::vector<scene::Region> start = organ.regions;
   for (std::size_t r = 0; r < start.size(); ++r) {
     scene::Drive& d = start[r].drive;
@@ -361,11 +362,9 @@ OrganTuning tune_organ(const scene::Scene& scene, std::size_t organ_index, const
   out.transfer = problem.target.transfer_note();
   log("floor (the body tied to the target at " + std::to_string(static_cast<int>(t.coupling_N_per_m)) +
       " N/m): " + format_error(out.floor));
-  const std::vector<double> activation = region_activation_s(problem.model);
-  const std::vector<scene::Region> by_forces =
-      fitted_regions(organ, recorded.times_s, recorded.contraction, out.drive_trained, activation);
+  const std::vector<scene::Region> by_forces = fitted_regions(organ, problem.model, recorded.times_s, recorded.contraction, out.drive_trained);
   const std::vector<scene::Region> by_lengths =
-      fitted_regions(organ, recorded.times_s, recorded.length_contraction, out.drive_trained, activation);
+      fitted_regions(organ, problem.model, recorded.times_s, recorded.length_contraction, out.drive_trained);
   out.fitted_from_forces = play(problem, with_regions(problem.model, by_forces));
   out.fitted_from_lengths = play(problem, with_regions(problem.model, by_lengths));
   log("fitted from forces: " + format_error(out.fitted_from_forces) + "; mean coupling force " +

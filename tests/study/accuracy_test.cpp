@@ -137,8 +137,8 @@ TEST(Bench, GridCombinesTheListsOnce) {
 // error is at most 10 % of the motion of a converged reference, each regularly beating
 // region's amplitude within 5 % and its phase within 20 ms. Checked on the anatomical
 // heart's scenes, whose light damping makes them the hardest; one per distinct body and
-// rhythm (heart stands for cutaway, labels, auscultation and wiggers, which share its organ,
-// blood and solver; activation for strain, whose apex starts 20 ms after the ventricles, as
+// rhythm (heart, timed by its conduction system, stands for heart-conduction; cutaway for
+// labels, auscultation and wiggers, which share its organ, blood, solver and delays; activation for strain, whose apex starts 20 ms after the ventricles, as
 // slowmo-loop's does at its own 1/240 s; conduction and its right block, whose excitation
 // times each spring; heart-lbbb's reference does not converge from 1/480 s, docs/accuracy.md).
 // The reference is projective dynamics at 1/480 s,
@@ -165,7 +165,7 @@ TEST_P(ShippedScene, IsWithinTheAccuracyBudget) {
 
 INSTANTIATE_TEST_SUITE_P(AnatomicalHeart, ShippedScene,
                          ::testing::Values("heart", "heart-slowmo-loop", "heart-activation", "heart-infarct",
-                                           "heart-tachycardia", "heart-afib", "heart-compare", "heart-conduction",
+                                           "heart-tachycardia", "heart-afib", "heart-compare", "heart-cutaway",
                                            "heart-rbbb"),
                          [](const auto& info) {
                            std::string name = info.param;

@@ -1,5 +1,6 @@
 // ctest-labels: slow-under-sanitizers
-// Issue 37's round trip on the shipped anatomical heart, with its blood and without: the
+// Issue 37's round trip on a shipped anatomical heart with hand-timed delays (heart-cutaway:
+// heart's body and blood, without its conduction system), with its blood and without: the
 // scene's clip exported as a point cache is its own target, the known drives play it back
 // within the key frames' interpolation, and drives perturbed by 30 % in amplitude and 40 ms
 // in delay (each waveform and stiffness kept, `lock: [shape, stiffness]`) are tuned back to
@@ -30,7 +31,7 @@ struct Drive {
   const char* region;
   double amplitude, delay_s;  // The scene's. unit: 1, s
 };
-// scenes/heart.yaml's drives, in order (the atria's delay is 0).
+// scenes/heart-cutaway.yaml's drives, in order (the atria's delay is 0).
 constexpr Drive kDrives[] = {{"left_atrium", 0.10, 0}, {"right_atrium", 0.10, 0}, {"left_ventricle", 0.24, 0.160},
                              {"right_ventricle", 0.23, 0.160}, {"apex", 0.45, 0.160}};
 
@@ -42,7 +43,7 @@ double delay_apart(double a_s, double b_s) {
 
 void round_trip(const std::string& name, bool blood) {
   const auto dir = test::scratch("anatomical_round_trip_" + name);
-  std::string scene = test::read_file(test::source("scenes/heart.yaml"));
+  std::string scene = test::read_file(test::source("scenes/heart-cutaway.yaml"));
   if (!blood) {
     const std::size_t line = scene.find("    blood:");
     ASSERT_NE(line, std::string::npos);

@@ -1,11 +1,9 @@
-// The shipped heart with its conduction system switched on: the excitation times each
+// The shipped heart, timed by its conduction system: the excitation times each
 // spring's drive (atria first, ventricles after the AV node), and the world computes the
 // ECG from the same excitation.
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "scene/load.h"
@@ -17,15 +15,9 @@
 namespace systole::world {
 namespace {
 
-/// scenes/heart.yaml with `electrophysiology: {}` and without its regions' delays.
+/// scenes/heart.yaml (its conduction system on), 2 s long.
 scene::Scene excited_heart() {
-  std::ifstream in(test::source("scenes/heart.yaml"));
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string yaml = text.str();
-  for (std::size_t at; (at = yaml.find(", delay: 160 ms")) != std::string::npos;) yaml.erase(at, 15);
-  yaml.insert(yaml.find("    blood:"), "    electrophysiology: {}\n");
-  scene::Scene s = scene::load_from_string(yaml, "scenes/heart-excited.yaml");
+  scene::Scene s = scene::load(test::source("scenes/heart.yaml"));
   s.output.duration_s = 2;
   return s;
 }
@@ -54,8 +46,8 @@ TEST(HeartEcg, TheExcitationTimesEachSpringsDrive) {
   EXPECT_GT(contraction_of(model, "left_atrium", ex.av_node_s), 0.0);
   EXPECT_EQ(contraction_of(model, "left_ventricle", ex.his_s), 0.0);
   EXPECT_GT(contraction_of(model, "left_ventricle", ex.his_s + 0.1), 0.0);
-  // The same heart without the block: its regions contract together from their delays.
-  const World plain = build_world(scene::load(test::source("scenes/heart.yaml")));
+  // The same heart with hand-timed delays (heart-cutaway's): its regions contract together from them.
+  const World plain = build_world(scene::load(test::source("scenes/heart-cutaway.yaml")));
   EXPECT_FALSE(plain.organs[0].model.excitation);
   EXPECT_EQ(plain.organs[0].model.excited.size(), 0);
 }
@@ -69,7 +61,7 @@ TEST(HeartEcg, TheWorldsEcgHasTwelveLeadsAtItsOwnRate) {
   double peak = 0;
   for (double v : *ecg->lead("II")) peak = std::max(peak, std::abs(v));
   EXPECT_GT(peak, 0.1);
-  EXPECT_FALSE(organ_ecg(build_world(scene::load(test::source("scenes/heart.yaml"))).organs[0], 2.0));
+  EXPECT_FALSE(organ_ecg(build_world(scene::load(test::source("scenes/heart-cutaway.yaml"))).organs[0], 2.0));
 }
 
 }  // namespace

@@ -63,6 +63,22 @@ ValueSpec<std::vector<std::string>> region_names() {
   return spec;
 }
 
+/// overlay.ecg_sheet: a corner and a width (its height follows the paper).
+auto ecg_sheet_spec() {
+  return map<EcgSheetOverlay>(
+      {
+          field("organ", name_text(), &EcgSheetOverlay::organ, "The organ whose computed ECG is shown: it needs `electrophysiology`.")
+              .shown_default("the first organ"),
+          field("position", corner(), &EcgSheetOverlay::position, "Corner of the frame; insets in the same corner stack."),
+          field("width", whole<int>(268, 1920), &EcgSheetOverlay::width_px,
+                "Sheet width in pixels of a 720-line frame; its height follows the paper's 268:135."),
+      },
+      [](const Node& node, EcgSheetOverlay& e, const std::string&, const Context&) {
+        e.enabled = true;
+        e.origin = node.origin;
+      });
+}
+
 }  // namespace
 
 ValueSpec<View> view_spec() {
@@ -113,18 +129,6 @@ ValueSpec<Overlay> overlay_spec() {
       [](const Node& node, LegendOverlay& l, const std::string&, const Context&) {
         l.enabled = true;
         l.origin = node.origin;
-      });
-  auto ecg_sheet = map<EcgSheetOverlay>(
-      {
-          field("organ", name_text(), &EcgSheetOverlay::organ, "The organ whose computed ECG is shown: it needs `electrophysiology`.")
-              .shown_default("the first organ"),
-          field("position", corner(), &EcgSheetOverlay::position, "Corner of the frame; insets in the same corner stack."),
-          field("width", whole<int>(268, 1920), &EcgSheetOverlay::width_px,
-                "Sheet width in pixels of a 720-line frame; its height follows the paper's 268:135."),
-      },
-      [](const Node& node, EcgSheetOverlay& e, const std::string&, const Context&) {
-        e.enabled = true;
-        e.origin = node.origin;
       });
   // window is a time or the word "clip" (0 inside).
   const Range window_range = open_closed(0, 600);
@@ -197,7 +201,7 @@ ValueSpec<Overlay> overlay_spec() {
       field("legend", legend, &Overlay::legend, "A key of the organ's region colours.").shown_default("none"),
       field("traces", list(trace, 0, 8, "list of traces"), &Overlay::traces,
             "Live plots of a signal over time with a moving cursor."),
-      field("ecg_sheet", ecg_sheet, &Overlay::ecg_sheet,
+      field("ecg_sheet", ecg_sheet_spec(), &Overlay::ecg_sheet,
             "The organ's computed 12-lead ECG on ECG paper (25 mm/s, 10 mm/mV; 3x4 leads and a lead II rhythm "
             "strip), written up to the frame's time, page by page of 10 s.")
           .shown_default("none"),
