@@ -104,10 +104,19 @@ class SpringFits {
     Eigen::VectorXd contraction = state.region_contraction;
     Eigen::VectorXd shift = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model_.regions.size()));
     constexpr double kDelta = 1e-4;
-    const auto shifted = [&](const Eigen::VectorXd& c, int region, double by) {
-      Eigen::VectorXd out = c;
-      for (const auto& e : slots_of_[static_cast<std::size_t>(region)]) out[e.first] += by;
-      return out;
+    // Spring j's driven rest length with `region`'s slots shifted by `by`: of them, only its
+    // own ends' slots reach it, so only they are moved (and put back exactly).
+    const auto shifted_rest = [&](int j, int region, double by) {
+      const int ia = sp.contraction_a.empty() ? sp.region_a[j] : sp.contraction_a[j];
+      const int ib = sp.contraction_b.empty() ? sp.region_b[j] : sp.contraction_b[j];
+      const bool a = ia >= 0 && sp.region_a[j] == region, b = ib >= 0 && ib != ia && sp.region_b[j] == region;
+      const double ca = a ? contraction[ia] : 0.0, cb = b ? contraction[ib] : 0.0;
+      if (a) contraction[ia] += by;
+      if (b) contraction[ib] += by;
+      const double rest = sim::driven_rest_length(sp, j, contraction);
+      if (a) contraction[ia] = ca;
+      if (b) contraction[ib] = cb;
+      return rest;
     };
     for (int iteration = 0; iteration < 2; ++iteration) {
       length_jacobian_.setZero();
@@ -118,15 +127,14 @@ class SpringFits {
         residual_[row] = (length - sim::driven_rest_length(sp, j, contraction)) / sp.rest_m[j];
         for (int end : {sp.region_a[j], sp.region_b[j]}) {
           if (end < 0 || column_of_[end] < 0 || length_jacobian_(row, column_of_[end]) != 0) continue;
-          length_jacobian_(row, column_of_[end]) = (sim::driven_rest_length(sp, j, shifted(contraction, end, kDelta)) -
-                                                    sim::driven_rest_length(sp, j, shifted(contraction, end, -kDelta))) /
-                                                   (2 * kDelta * sp.rest_m[j]);
+          length_jacobian_(row, column_of_[end]) =
+              (shifted_rest(j, end, kDelta) - shifted_rest(j, end, -kDelta)) / (2 * kDelta * sp.rest_m[j]);
         }
       }
       const Eigen::VectorXd step = ridge_solve(length_jacobian_, residual_, 1e-6);
       for (std::size_t c = 0; c < fitted_.size(); ++c) {
         const double by = step[static_cast<Eigen::Index>(c)];
-        contraction = shifted(contraction, fitted_[c], by);
+        for (const auto& e : slots_of_[static_cast<std::size_t>(fitted_[c])]) contraction[e.first] += by;
         shift[fitted_[c]] += by;
       }
     }
