@@ -13,19 +13,16 @@
 #include <cmath>
 
 #include "support/run.h"
+#include "heart_clip_target.h"
 #include "train_test_util.h"
 
 namespace systole {
 namespace {
 
 using train::testing::printed_pct;
+using train::testing::replace_once;
+using train::testing::with_own_clip_as_target;
 using train::testing::tuned_value;
-
-void replace_once(std::string& text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-}
 
 struct Drive {
   const char* region;
@@ -49,16 +46,7 @@ void round_trip(const std::string& name, bool blood) {
     ASSERT_NE(line, std::string::npos);
     scene.erase(line, scene.find('\n', line) + 1 - line);
   }
-  test::write_file(dir / "heart.yaml", scene);
-  // 90 frames a second: at 30 the key frames' interpolation of the valves' leaflets, which
-  // open within a frame, alone is 12 % of the motion (docs/training.md).
-  const auto exported = test::run(test::systole() + " export " + (dir / "heart.yaml").string() + " -o " +
-                                  (dir / "heart.pc2").string() + " -D output.duration=2.5s -D output.fps=90");
-  ASSERT_EQ(exported.exit_code, 0) << exported.output;
-
-  const std::string target = "    target: {rate: 72 bpm, animation: heart.pc2, cycles: 3, lock: [shape, stiffness], budget: 500}\n";
-  replace_once(scene, "      - {name: coronary_arteries, color: \"#d9a441\"}\n",
-               "      - {name: coronary_arteries, color: \"#d9a441\"}\n" + target);
+  scene = with_own_clip_as_target(dir, scene, "shape, stiffness", 500);
   // +-30 % in amplitude, +-40 ms or more in delay.
   replace_once(scene, "amplitude: 0.10, systolic_fraction: 0.15}", "amplitude: 0.13, delay: 40 ms, systolic_fraction: 0.15}");
   replace_once(scene, "amplitude: 0.10, systolic_fraction: 0.15}", "amplitude: 0.07, delay: 40 ms, systolic_fraction: 0.15}");

@@ -9,19 +9,16 @@
 #include <gtest/gtest.h>
 
 #include "support/run.h"
+#include "heart_clip_target.h"
 #include "train_test_util.h"
 
 namespace systole {
 namespace {
 
 using train::testing::printed_pct;
+using train::testing::replace_once;
+using train::testing::with_own_clip_as_target;
 using train::testing::tuned_value;
-
-void replace_once(std::string& text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-}
 
 struct Drive {
   const char* region;
@@ -34,14 +31,7 @@ constexpr Drive kDrives[] = {
 TEST(ElectrophysiologyTune, KeepsTheConductionsTimingAndTunesTheAmplitudesBack) {
   const auto dir = test::scratch("electrophysiology_tune");
   std::string scene = test::read_file(test::source("scenes/heart-conduction.yaml"));
-  test::write_file(dir / "heart.yaml", scene);
-  const auto exported = test::run(test::systole() + " export " + (dir / "heart.yaml").string() + " -o " +
-                                  (dir / "heart.pc2").string() + " -D output.duration=2.5s -D output.fps=90");
-  ASSERT_EQ(exported.exit_code, 0) << exported.output;
-
-  const std::string target = "    target: {rate: 72 bpm, animation: heart.pc2, cycles: 3, lock: [shape, stiffness], budget: 150}\n";
-  replace_once(scene, "      - {name: coronary_arteries, color: \"#d9a441\"}\n",
-               "      - {name: coronary_arteries, color: \"#d9a441\"}\n" + target);
+  scene = with_own_clip_as_target(dir, scene, "shape, stiffness", 150);
   replace_once(scene, "amplitude: 0.10,", "amplitude: 0.13,");
   replace_once(scene, "amplitude: 0.10,", "amplitude: 0.07,");
   replace_once(scene, "amplitude: 0.24,", "amplitude: 0.31,");
