@@ -74,9 +74,9 @@ LeadWaves qrs_waves(const std::vector<double>& x, std::size_t on, std::size_t of
     biggest = std::max(biggest, std::abs(x[i]));
   }
   const double edge = kEdgeShare * biggest;
-  if (w.r > edge) w.r_duration_s = double(wave_width(x, r_at, on, off, edge)) * dt;
   // The S is the negative wave after the R (before it, a q); a QS complex is all S.
   if (w.r > edge) {
+    w.r_duration_s = double(wave_width(x, r_at, on, off, edge)) * dt;
     s_at = r_at;
     for (std::size_t i = r_at; i <= off; ++i) s_at = x[i] < x[s_at] ? i : s_at;
   }
