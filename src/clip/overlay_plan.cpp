@@ -108,10 +108,8 @@ void fill_ecg_trace(const scene::Organ& organ, const sim::Model& model, const sc
 }
 
 /// A lead of the organ's computed ECG (world/heart_ecg.h); trace.values has the sample count.
-void fill_computed_ecg_trace(const world::OrganBody& body, const scene::TraceOverlay& t, double clip_s,
-                             overlay::Trace& trace) {
-  const std::optional<electro::Ecg> ecg = world::organ_ecg(body, clip_s + 1.0 / kSignalRateHz, kSignalRateHz);
-  const std::vector<double>& lead = *ecg->lead(t.lead);
+void fill_computed_ecg_trace(const electro::Ecg& ecg, const scene::TraceOverlay& t, overlay::Trace& trace) {
+  const std::vector<double>& lead = *ecg.lead(t.lead);
   // No running readout: a monitor's ECG shows the wave, and its value near the baseline
   // would flicker through meaningless digits.
   trace.title = "ECG lead " + t.lead + " (mV)";
@@ -142,10 +140,20 @@ OverlayPlan::OverlayPlan(const scene::Scene& scene, const world::World& world) :
 }
 
 void OverlayPlan::plan_ecg_sheet(const scene::Scene& scene, const world::World& world) {
-  const world::OrganBody& body = world.organs[static_cast<std::size_t>(organ_index(scene, spec_.ecg_sheet.organ))];
-  const double clip_s = scene.output.frame_count() / fps_;
-  const std::optional<electro::Ecg> ecg = world::organ_ecg(body, clip_s + 1.0 / kSignalRateHz, kSignalRateHz);
-  ecg_sheet_ = {"Computed 12-lead ECG of " + body.model.name, ecg->rate_hz, ecg->start_s, ecg->leads, ecg->mv};
+  const int o = organ_index(scene, spec_.ecg_sheet.organ);
+  const electro::Ecg& ecg = computed_ecg(world, o, scene.output.duration_s);  // The traces' clip length.
+  ecg_sheet_ = {"Computed 12-lead ECG of " + scene.organs[static_cast<std::size_t>(o)].name, ecg.rate_hz, ecg.start_s,
+                ecg.leads, ecg.mv};
+}
+
+const electro::Ecg& OverlayPlan::computed_ecg(const world::World& world, int organ, double clip_s) {
+  auto it = ecgs_.find(organ);
+  if (it == ecgs_.end()) {
+    // One sample past the clip's end, so the last frame's time has a sample.
+    const world::OrganBody& body = world.organs[static_cast<std::size_t>(organ)];
+    it = ecgs_.emplace(organ, *world::organ_ecg(body, clip_s + 1.0 / kSignalRateHz, kSignalRateHz)).first;
+  }
+  return it->second;
 }
 
 void OverlayPlan::plan_views(const scene::Scene& scene) {
@@ -271,7 +279,7 @@ void OverlayPlan::plan_trace(const scene::Scene& scene, const world::World& worl
     if (t.signal == scene::TraceSignal::kActivation) {
       fill_activation_trace(organ, model, t, trace);
     } else if (model.excitation) {
-      fill_computed_ecg_trace(world.organs[static_cast<std::size_t>(o)], t, clip_s, trace);
+      fill_computed_ecg_trace(computed_ecg(world, o, clip_s), t, trace);
     } else {
       fill_ecg_trace(organ, model, t, clip_s, trace);
     }

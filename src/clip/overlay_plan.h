@@ -5,11 +5,13 @@
 // (anti-aliased) frame so text stays crisp. src/overlay/ does the drawing.
 
 #include <Eigen/Core>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "common/image.h"
+#include "electro/ecg.h"
 #include "mesh/anatomy.h"
 #include "overlay/ecg_sheet.h"
 #include "overlay/labels.h"
@@ -80,6 +82,8 @@ class OverlayPlan {
   void plan_legend(const scene::Scene& scene, const world::World& world);
   void plan_trace(const scene::Scene& scene, const world::World& world, const scene::TraceOverlay& t, int index);
   void plan_ecg_sheet(const scene::Scene& scene, const world::World& world);
+  /// The organ's computed ECG over the clip, computed once for every trace and the sheet.
+  const electro::Ecg& computed_ecg(const world::World& world, int organ, double clip_s);
   void layout(int width, int height);
 
   bool empty_ = true;
@@ -99,6 +103,7 @@ class OverlayPlan {
     std::vector<double> mL;                  ///< Per frame, NaN until recorded. unit: mL
   };
   std::vector<int> trace_series_;  ///< Per trace: the volume series it shows, or -1.
+  std::map<int, electro::Ecg> ecgs_;  ///< Per organ with a conduction system shown: its ECG over the clip.
   overlay::EcgSheet ecg_sheet_;     ///< The organ's 12 leads over the clip, when overlay.ecg_sheet is on.
   std::vector<int> volume_organs_;
   std::vector<VolumeSeries> series_;

@@ -47,20 +47,31 @@ double muscle_volume(const std::vector<Eigen::Vector3i>& triangles, const Eigen:
 
 constexpr const char* kMidSegmentNames[6] = {"anterior", "anteroseptal", "inferoseptal", "inferior", "inferolateral", "anterolateral"};
 
-// Each mid-ventricular segment's thickening from end-diastole to end-systole: the mean
-// lining-to-epicardium distance of its pairs, as echocardiography scores regional motion.
+/// The mean lining-to-epicardium distance of each mid-ventricular segment's pairs (AHA 7-12,
+/// in order), the render vertices placed by `at(vertex)`, as echocardiography scores
+/// regional motion. unit: m
+template <class At>
+std::array<double, 6> mid_thickness(const mesh::VentricleLandmarks& lv, const At& at) {
+  std::array<double, 6> sum{}, count{};
+  for (std::size_t i = 0; i < lv.wall.size(); ++i) {
+    const int s = lv.wall_segment[i] - 7;
+    if (s < 0 || s >= 6) continue;
+    const auto [inner, outer] = lv.wall[i];
+    sum[static_cast<std::size_t>(s)] += (at(outer) - at(inner)).norm();
+    count[static_cast<std::size_t>(s)] += 1;
+  }
+  for (std::size_t s = 0; s < 6; ++s) sum[s] = count[s] > 0 ? sum[s] / count[s] : 0.0;
+  return sum;
+}
+
+// Each mid-ventricular segment's thickening from end-diastole to end-systole.
 std::vector<SegmentThickening> segment_thickening(const mesh::VentricleLandmarks& lv, const Eigen::Matrix3Xd& diastole,
                                                   const Eigen::Matrix3Xd& systole) {
+  const auto before = mid_thickness(lv, [&](int v) { return Eigen::Vector3d(diastole.col(v)); });
+  const auto after = mid_thickness(lv, [&](int v) { return Eigen::Vector3d(systole.col(v)); });
   std::vector<SegmentThickening> out;
-  for (int segment = 7; segment <= 12; ++segment) {
-    double before = 0, after = 0;
-    for (std::size_t i = 0; i < lv.wall.size(); ++i) {
-      if (lv.wall_segment[i] != segment) continue;
-      const auto [inner, outer] = lv.wall[i];
-      before += (diastole.col(outer) - diastole.col(inner)).norm();
-      after += (systole.col(outer) - systole.col(inner)).norm();
-    }
-    if (before > 0) out.push_back({segment, kMidSegmentNames[segment - 7], 100 * (after / before - 1)});
+  for (std::size_t s = 0; s < 6; ++s) {
+    if (before[s] > 0) out.push_back({int(s) + 7, kMidSegmentNames[s], 100 * (after[s] / before[s] - 1)});
   }
   return out;
 }
@@ -129,21 +140,6 @@ struct HeartRecording {
   std::vector<std::array<double, 6>> mid_thickness;
 };
 
-/// The mean lining-to-epicardium distance of each mid-ventricular segment's pairs. unit: m
-std::array<double, 6> mid_thickness(const mesh::VentricleLandmarks& lv, const sim::Embedding& embedding,
-                                    const Eigen::Matrix3Xd& x) {
-  std::array<double, 6> sum{}, count{};
-  for (std::size_t i = 0; i < lv.wall.size(); ++i) {
-    const int s = lv.wall_segment[i] - 7;
-    if (s < 0 || s >= 6) continue;
-    const auto [inner, outer] = lv.wall[i];
-    sum[static_cast<std::size_t>(s)] += (sim::embed_vertex(embedding, x, outer) - sim::embed_vertex(embedding, x, inner)).norm();
-    count[static_cast<std::size_t>(s)] += 1;
-  }
-  for (std::size_t s = 0; s < 6; ++s) sum[s] = count[s] > 0 ? sum[s] / count[s] : 0.0;
-  return sum;
-}
-
 /// Listens to the source as it runs through frame `last`, recording organ `organ` from frame
 /// `first` on (never frame 0: the run is measured after its first step).
 HeartRecording record_heart(world::FrameSource& source, int organ, int first, int last) {
@@ -163,7 +159,8 @@ HeartRecording record_heart(world::FrameSource& source, int organ, int first, in
   source.on_step([&rec, organ](int o, const world::OrganBody& b) {
     if (o != organ) return;
     rec.wall_times.push_back(b.state.time_s);
-    rec.mid_thickness.push_back(mid_thickness(b.geometry.mesh.anatomy.left_ventricle, b.embedding, b.state.x));
+    rec.mid_thickness.push_back(mid_thickness(b.geometry.mesh.anatomy.left_ventricle,
+                                              [&b](int v) { return sim::embed_vertex(b.embedding, b.state.x, v); }));
   });
   source.on_frame([&rec, &body, first](int f) {
     if (f < 1 || f < first) return;
